@@ -1,0 +1,130 @@
+# tumble: plain Makefile. `make` builds the libraries; `make test`, `make demo`,
+# `make sanitize`, `make install` are the other entry points (see README.md).
+
+CC ?= cc
+CXX ?= c++
+PREFIX ?= /usr/local
+DESTDIR ?=
+
+ifeq ($(DEBUG),1)
+  BUILD ?= build/debug
+  OPT := -O0 -g
+else
+  BUILD ?= build
+  OPT := -O2
+endif
+
+WARN := -Wall -Wextra -Wpedantic -Werror
+CFLAGS_ALL := -std=c17 $(WARN) -ffp-contract=off $(OPT) -fPIC -Iinclude -MMD -MP $(EXTRA_CFLAGS)
+CXXFLAGS_ALL := -std=c++17 $(WARN) -ffp-contract=off $(OPT) -Iinclude -MMD -MP $(EXTRA_CFLAGS)
+LDLIBS_ALL := -lm $(EXTRA_LDFLAGS)
+
+LIB_SRC := $(wildcard src/*.c)
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+LIB_A := $(BUILD)/libtumble.a
+LIB_SO := $(BUILD)/libtumble.so
+
+# one check executable per suite; reference suites also link the Box2D shim
+UNIT_SRC := $(wildcard tests/test_*.c)
+UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/tests/%)
+REF_SRC := $(wildcard tests/reference/test_*.c)
+REF_BIN := $(REF_SRC:tests/reference/%.c=$(BUILD)/tests/reference/%)
+SHIM_SRC := $(wildcard tests/reference/*.cpp)
+SHIM_OBJ := $(SHIM_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_UTIL_OBJ := $(BUILD)/obj/tests/test_util.o
+
+CHECK_CFLAGS = $(shell pkg-config --cflags check 2>/dev/null)
+CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
+
+DEMO_BIN := $(BUILD)/tumble-trajectory
+
+.PHONY: all lib test tests sanitize demo install uninstall clean format format-check deps-test
+
+all: lib
+
+lib: $(LIB_A) $(LIB_SO)
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) $(CHECK_INC) -c $< -o $@
+
+$(BUILD)/obj/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS_ALL) -c $< -o $@
+
+$(LIB_A): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+$(LIB_SO): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(CC) -shared $(EXTRA_CFLAGS) -Wl,-soname,libtumble.so.0 -o $@ $^ $(LDLIBS_ALL)
+
+# ---- tests -------------------------------------------------------------------
+# Test objects need check's include flags; computed only when tests are built.
+$(BUILD)/obj/tests/%.o: CHECK_INC = $(CHECK_CFLAGS)
+
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_UTIL_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(EXTRA_CFLAGS) -o $@ $< $(TEST_UTIL_OBJ) $(LIB_A) $(CHECK_LIBS) $(LDLIBS_ALL)
+
+$(BUILD)/tests/reference/%: $(BUILD)/obj/tests/reference/%.o $(SHIM_OBJ) $(TEST_UTIL_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CXX) $(EXTRA_CFLAGS) -o $@ $< $(SHIM_OBJ) $(TEST_UTIL_OBJ) $(LIB_A) -lbox2d $(CHECK_LIBS) $(LDLIBS_ALL)
+
+deps-test:
+	@tools/deps.sh test
+
+tests: $(UNIT_BIN) $(REF_BIN)
+
+# The deps check runs first, alone; then the suites build and run.
+test: deps-test
+	@$(MAKE) --no-print-directory tests
+	@tools/run_tests.sh $(UNIT_BIN) $(REF_BIN)
+	@tools/check_readme_example.sh $(BUILD)
+
+# Same suites with AddressSanitizer and UndefinedBehaviorSanitizer, in-process
+# (CK_FORK=no) so that LeakSanitizer sees every test's allocations.
+SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+sanitize: deps-test
+	@$(MAKE) --no-print-directory BUILD=build/sanitize EXTRA_CFLAGS="$(SAN)" tests
+	@CK_FORK=no ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  tools/run_tests.sh $(UNIT_SRC:tests/%.c=build/sanitize/tests/%) $(REF_SRC:tests/reference/%.c=build/sanitize/tests/reference/%)
+
+# ---- demo ----------------------------------------------------------------------
+$(DEMO_BIN): $(BUILD)/obj/demos/trajectory.o $(LIB_A)
+	$(CC) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
+
+demo: $(DEMO_BIN)
+	$(DEMO_BIN)
+
+# ---- install -------------------------------------------------------------------
+$(BUILD)/tumble.pc: tools/tumble.pc.in Makefile
+	@mkdir -p $(dir $@)
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|0.1.0|g' $< > $@
+
+install: lib $(BUILD)/tumble.pc
+	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/tumble.h $(DESTDIR)$(PREFIX)/include/tumble.h
+	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/libtumble.a
+	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libtumble.so.0
+	ln -sf libtumble.so.0 $(DESTDIR)$(PREFIX)/lib/libtumble.so
+	install -m 644 $(BUILD)/tumble.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc
+	-@[ -z "$(DESTDIR)" ] && command -v ldconfig >/dev/null && [ "$$(id -u)" = 0 ] && ldconfig || true
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/include/tumble.h $(DESTDIR)$(PREFIX)/lib/libtumble.a \
+	  $(DESTDIR)$(PREFIX)/lib/libtumble.so $(DESTDIR)$(PREFIX)/lib/libtumble.so.0 \
+	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc
+
+format:
+	clang-format -i include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp tests/reference/*.h demos/*.c
+
+format-check:
+	clang-format --dry-run --Werror include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp tests/reference/*.h demos/*.c
+
+clean:
+	rm -rf build
+
+-include $(shell find build -name '*.d' 2>/dev/null)

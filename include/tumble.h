@@ -1,0 +1,394 @@
+/* tumble: a 2D rigid-body physics engine for games.
+ *
+ * One header, C17, no dependency beyond libc and libm.
+ *
+ * Conventions
+ * - Units: metres, kilograms, seconds, radians. Tuned for objects of 0.05 to 50 m.
+ * - Objects are reached through handles (tb_world_id, tb_body_id, tb_shape_id) that
+ *   carry a generation: a stale handle (its object was destroyed) or a foreign one
+ *   is reported as an error, never dereferenced.
+ * - Definitions are plain structs. The one rule for defaults: start every definition
+ *   from its tb_default_*_def() function, then change the fields you care about.
+ * - Every entry point validates its input (NULL, NaN/Inf, negative sizes, degenerate
+ *   polygons, bad time steps, stale handles). A rejected call changes nothing,
+ *   returns an error code (functions that create return an invalid handle, getters
+ *   return zero) and leaves a readable message in tb_last_error() and, when the
+ *   world is known, in tb_world_last_error().
+ * - Not thread-safe: use one world from one thread at a time.
+ */
+#ifndef TUMBLE_H
+#define TUMBLE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define TB_VERSION_MAJOR 0
+#define TB_VERSION_MINOR 1
+#define TB_VERSION_PATCH 0
+
+/* Largest vertex count of a convex polygon; more points are an error, never cut. */
+#ifndef TB_MAX_POLYGON_VERTICES
+#define TB_MAX_POLYGON_VERTICES 8
+#endif
+
+/* Points of a hull closer than this (metres) are welded into one. */
+#define TB_LINEAR_SLOP 0.005f
+
+/* Largest accepted coordinate or size (metres). Beyond it a float cannot place
+ * anything to the centimetre, so larger values are rejected as bad input. */
+#define TB_MAX_LENGTH 1.0e7f
+/* Largest accepted magnitude of any other quantity (velocity, force, impulse,
+ * torque, gravity, density, damping, mass, inertia). */
+#define TB_MAX_VALUE 1.0e18f
+
+/* ---------------------------------------------------------------- results -- */
+
+typedef enum tb_result {
+  TB_OK = 0,
+  TB_ERR_NULL_ARGUMENT,      /* a required pointer was NULL */
+  TB_ERR_INVALID_ARGUMENT,   /* NaN, infinite, negative or out-of-range value */
+  TB_ERR_STALE_HANDLE,       /* the object was destroyed (or the handle is garbage) */
+  TB_ERR_FOREIGN_HANDLE,     /* the handle belongs to another world */
+  TB_ERR_DEGENERATE_POLYGON, /* < 3 distinct points, collinear or near-zero area */
+  TB_ERR_TOO_MANY_VERTICES,  /* more than TB_MAX_POLYGON_VERTICES hull points */
+  TB_ERR_OUT_OF_MEMORY,
+  TB_ERR_CAPACITY,           /* a fixed limit (e.g. number of worlds) is reached */
+  TB_ERR_LOCKED,             /* called from inside tb_world_step (e.g. a callback) */
+  TB_ERR_WRONG_BODY_TYPE,    /* e.g. mass data on a static body */
+  TB_ERR_NUMERIC             /* a NaN appeared during the step and was contained */
+} tb_result;
+
+/* The short name of a result code, e.g. "TB_ERR_STALE_HANDLE". */
+const char* tb_result_name(tb_result r);
+
+/* The message of the last rejected call on this thread ("" when none). */
+const char* tb_last_error(void);
+tb_result tb_last_result(void);
+/* Forget the last error of this thread. */
+void tb_clear_error(void);
+
+/* ------------------------------------------------------------------ math -- */
+
+typedef struct tb_vec2 {
+  float x, y;
+} tb_vec2;
+
+/* A rotation as a unit complex number: (cos angle, sin angle). */
+typedef struct tb_rot {
+  float c, s;
+} tb_rot;
+
+/* A rigid transform: world = p + q * local. */
+typedef struct tb_transform {
+  tb_vec2 p;
+  tb_rot q;
+} tb_transform;
+
+typedef struct tb_aabb {
+  tb_vec2 lower, upper;
+} tb_aabb;
+
+/* Mass properties. rotational_inertia is about the centre of mass (kg m^2). */
+typedef struct tb_mass_data {
+  float mass;
+  tb_vec2 center;
+  float rotational_inertia;
+} tb_mass_data;
+
+/* --------------------------------------------------------------- handles -- */
+
+/* Handles: index + 1 (so a zeroed handle is the null handle) and a generation. */
+typedef struct tb_world_id {
+  uint16_t index1;
+  uint16_t generation;
+} tb_world_id;
+
+typedef struct tb_body_id {
+  int32_t index1;
+  uint16_t world0;
+  uint16_t generation;
+} tb_body_id;
+
+typedef struct tb_shape_id {
+  int32_t index1;
+  uint16_t world0;
+  uint16_t generation;
+} tb_shape_id;
+
+static inline bool tb_world_id_is_null(tb_world_id id) { return id.index1 == 0; }
+static inline bool tb_body_id_is_null(tb_body_id id) { return id.index1 == 0; }
+static inline bool tb_shape_id_is_null(tb_shape_id id) { return id.index1 == 0; }
+
+/* ----------------------------------------------------------------- world -- */
+
+/* Integrator for bodies moved only by gravity, applied forces and the force field. */
+typedef enum tb_integrator {
+  TB_INTEGRATOR_SEMI_IMPLICIT_EULER = 0, /* symplectic; the solver's own scheme */
+  TB_INTEGRATOR_MIDPOINT,                /* explicit midpoint, RK2 */
+  TB_INTEGRATOR_RK4                      /* classical Runge-Kutta, 4 stages */
+} tb_integrator;
+
+/* What a force-field callback sees of a body. Position and angle are of the
+ * centre of mass. */
+typedef struct tb_body_state {
+  tb_body_id body;
+  tb_vec2 center;
+  float angle;
+  tb_vec2 linear_velocity;
+  float angular_velocity;
+  float mass;
+  float rotational_inertia;
+  void* user_data;
+} tb_body_state;
+
+/* A force field f(t, body state) -> (force at the centre of mass, torque). It is
+ * called for every awake dynamic body at each integrator stage, so it must be a
+ * pure function of its arguments. It must not call back into the world. */
+typedef void tb_force_field_fn(double time, const tb_body_state* state, void* context,
+                               tb_vec2* force, float* torque);
+
+typedef struct tb_world_def {
+  tb_vec2 gravity;              /* m/s^2, default (0, -10) */
+  tb_integrator integrator;     /* default semi-implicit Euler */
+  tb_force_field_fn* force_field; /* optional, default NULL */
+  void* force_field_context;
+  void* user_data;
+} tb_world_def;
+
+tb_world_def tb_default_world_def(void);
+
+/* Create a world; returns the null handle on error (see tb_last_error()). */
+tb_world_id tb_create_world(const tb_world_def* def);
+tb_result tb_destroy_world(tb_world_id world);
+bool tb_world_is_valid(tb_world_id world);
+
+/* Advance by time_step seconds (> 0, finite, at most 1 s), split into substeps
+ * (1 to 64; 4 is a good default at 60 Hz). */
+tb_result tb_world_step(tb_world_id world, float time_step, int substeps);
+
+tb_result tb_world_set_gravity(tb_world_id world, tb_vec2 gravity);
+tb_vec2 tb_world_get_gravity(tb_world_id world);
+tb_result tb_world_set_integrator(tb_world_id world, tb_integrator integrator);
+tb_integrator tb_world_get_integrator(tb_world_id world);
+tb_result tb_world_set_force_field(tb_world_id world, tb_force_field_fn* fn, void* context);
+/* Simulated time: the sum of all time steps taken (seconds). */
+double tb_world_get_time(tb_world_id world);
+void* tb_world_get_user_data(tb_world_id world);
+tb_result tb_world_set_user_data(tb_world_id world, void* user_data);
+
+typedef struct tb_counts {
+  int body_count;
+  int awake_body_count; /* enabled, non-static bodies that are simulated */
+  int shape_count;
+  int step_count;
+} tb_counts;
+
+tb_counts tb_world_get_counts(tb_world_id world);
+
+/* The message of the last call rejected on this world ("" when none). */
+const char* tb_world_last_error(tb_world_id world);
+
+/* ---------------------------------------------------------------- bodies -- */
+
+typedef enum tb_body_type {
+  TB_STATIC_BODY = 0,    /* never moves; infinite mass */
+  TB_KINEMATIC_BODY = 1, /* moves with its velocity; ignores forces; infinite mass */
+  TB_DYNAMIC_BODY = 2    /* moved by forces; mass from its shapes */
+} tb_body_type;
+
+typedef struct tb_body_def {
+  tb_body_type type;         /* default static */
+  tb_vec2 position;          /* world position of the body origin */
+  float angle;               /* radians */
+  tb_vec2 linear_velocity;   /* of the body origin, m/s */
+  float angular_velocity;    /* rad/s */
+  float linear_damping;      /* >= 0, 1/s: v <- v / (1 + h c) per substep */
+  float angular_damping;     /* >= 0, 1/s */
+  float gravity_scale;       /* default 1 */
+  bool fixed_rotation;
+  bool enabled;              /* default true */
+  void* user_data;
+} tb_body_def;
+
+tb_body_def tb_default_body_def(void);
+
+tb_body_id tb_create_body(tb_world_id world, const tb_body_def* def);
+/* Destroys the body and all its shapes. */
+tb_result tb_destroy_body(tb_body_id body);
+bool tb_body_is_valid(tb_body_id body);
+tb_world_id tb_body_get_world(tb_body_id body);
+
+tb_body_type tb_body_get_type(tb_body_id body);
+tb_result tb_body_set_type(tb_body_id body, tb_body_type type);
+
+/* The body origin and angle. */
+tb_vec2 tb_body_get_position(tb_body_id body);
+float tb_body_get_angle(tb_body_id body);
+tb_rot tb_body_get_rotation(tb_body_id body);
+tb_transform tb_body_get_transform(tb_body_id body);
+tb_result tb_body_set_transform(tb_body_id body, tb_vec2 position, float angle);
+
+/* Centre of mass, in body and in world coordinates. */
+tb_vec2 tb_body_get_local_center(tb_body_id body);
+tb_vec2 tb_body_get_world_center(tb_body_id body);
+
+/* Linear velocity is that of the centre of mass. */
+tb_vec2 tb_body_get_linear_velocity(tb_body_id body);
+tb_result tb_body_set_linear_velocity(tb_body_id body, tb_vec2 v);
+float tb_body_get_angular_velocity(tb_body_id body);
+tb_result tb_body_set_angular_velocity(tb_body_id body, float w);
+/* Velocity of the material point at a world point: v + w x r. */
+tb_vec2 tb_body_get_point_velocity(tb_body_id body, tb_vec2 world_point);
+
+float tb_body_get_linear_damping(tb_body_id body);
+tb_result tb_body_set_linear_damping(tb_body_id body, float damping);
+float tb_body_get_angular_damping(tb_body_id body);
+tb_result tb_body_set_angular_damping(tb_body_id body, float damping);
+float tb_body_get_gravity_scale(tb_body_id body);
+tb_result tb_body_set_gravity_scale(tb_body_id body, float scale);
+bool tb_body_is_fixed_rotation(tb_body_id body);
+tb_result tb_body_set_fixed_rotation(tb_body_id body, bool fixed);
+bool tb_body_is_enabled(tb_body_id body);
+tb_result tb_body_set_enabled(tb_body_id body, bool enabled);
+void* tb_body_get_user_data(tb_body_id body);
+tb_result tb_body_set_user_data(tb_body_id body, void* user_data);
+
+/* Forces and torques act over the next step and are then cleared. Impulses
+ * change the velocity at once: dV = J / M, dw = (r x J) / I. Only dynamic bodies
+ * respond; on other bodies these calls succeed and do nothing. */
+tb_result tb_body_apply_force(tb_body_id body, tb_vec2 force, tb_vec2 world_point);
+tb_result tb_body_apply_force_to_center(tb_body_id body, tb_vec2 force);
+tb_result tb_body_apply_torque(tb_body_id body, float torque);
+tb_result tb_body_apply_linear_impulse(tb_body_id body, tb_vec2 impulse, tb_vec2 world_point);
+tb_result tb_body_apply_linear_impulse_to_center(tb_body_id body, tb_vec2 impulse);
+tb_result tb_body_apply_angular_impulse(tb_body_id body, float impulse);
+/* The force and torque accumulated for the next step (torque about the centre). */
+tb_vec2 tb_body_get_force(tb_body_id body);
+float tb_body_get_torque(tb_body_id body);
+
+/* Mass (kg) and rotational inertia about the centre of mass (kg m^2). */
+float tb_body_get_mass(tb_body_id body);
+float tb_body_get_rotational_inertia(tb_body_id body);
+tb_mass_data tb_body_get_mass_data(tb_body_id body);
+/* Override the mass computed from shapes (dynamic bodies only; mass > 0,
+ * inertia >= 0, finite centre). Adding or removing a shape, or
+ * tb_body_reset_mass_data(), recomputes the mass from the shapes again. */
+tb_result tb_body_set_mass_data(tb_body_id body, tb_mass_data mass_data);
+tb_result tb_body_reset_mass_data(tb_body_id body);
+
+tb_vec2 tb_body_get_world_point(tb_body_id body, tb_vec2 local_point);
+tb_vec2 tb_body_get_local_point(tb_body_id body, tb_vec2 world_point);
+tb_vec2 tb_body_get_world_vector(tb_body_id body, tb_vec2 local_vector);
+tb_vec2 tb_body_get_local_vector(tb_body_id body, tb_vec2 world_vector);
+
+/* 1/2 M V^2 + 1/2 I w^2 (J). */
+float tb_body_get_kinetic_energy(tb_body_id body);
+/* P = M V (kg m/s). */
+tb_vec2 tb_body_get_linear_momentum(tb_body_id body);
+/* L about a world point: I w + (X - point) x M V (kg m^2/s). */
+float tb_body_get_angular_momentum(tb_body_id body, tb_vec2 world_point);
+
+/* ---------------------------------------------------------------- shapes -- */
+
+typedef enum tb_shape_type {
+  TB_SHAPE_CIRCLE = 0,
+  TB_SHAPE_CAPSULE,
+  TB_SHAPE_SEGMENT,
+  TB_SHAPE_POLYGON
+} tb_shape_type;
+
+typedef struct tb_circle {
+  tb_vec2 center; /* body-local */
+  float radius;   /* > 0 */
+} tb_circle;
+
+/* Two half discs joined by a rectangle: the points within radius of segment c1-c2. */
+typedef struct tb_capsule {
+  tb_vec2 center1, center2;
+  float radius; /* > 0 */
+} tb_capsule;
+
+/* A line segment: no area, no mass. */
+typedef struct tb_segment {
+  tb_vec2 point1, point2;
+} tb_segment;
+
+/* A convex polygon, counter-clockwise, optionally rounded by radius (the set of
+ * points within radius of the core polygon). Make one with tb_make_polygon or
+ * tb_make_box*; the fields are filled by them. */
+typedef struct tb_polygon {
+  tb_vec2 vertices[TB_MAX_POLYGON_VERTICES];
+  tb_vec2 normals[TB_MAX_POLYGON_VERTICES];
+  tb_vec2 centroid;
+  float radius;
+  int count;
+} tb_polygon;
+
+/* The convex hull of points: near-duplicates (closer than TB_LINEAR_SLOP) are
+ * welded, interior and collinear points dropped. Errors: NULL, count < 3, NaN,
+ * fewer than 3 distinct points, all collinear, near-zero area, or a hull of more
+ * than TB_MAX_POLYGON_VERTICES points. radius >= 0 rounds the corners. */
+tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_polygon* out);
+/* A box of half-extents hx, hy centred on the body origin. */
+tb_result tb_make_box(float hx, float hy, tb_polygon* out);
+/* A box centred at center (body-local), rotated by angle. */
+tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb_polygon* out);
+/* A box with rounded corners: core half-extents hx, hy plus radius. */
+tb_result tb_make_rounded_box(float hx, float hy, float radius, tb_polygon* out);
+
+typedef struct tb_shape_def {
+  float density;     /* kg/m^2, >= 0, default 1 */
+  float friction;    /* >= 0, default 0.6 */
+  float restitution; /* >= 0, default 0 */
+  void* user_data;
+} tb_shape_def;
+
+tb_shape_def tb_default_shape_def(void);
+
+/* Attach a shape to a body. The body's mass, centre and inertia are recomputed. */
+tb_shape_id tb_create_circle_shape(tb_body_id body, const tb_shape_def* def, const tb_circle* circle);
+tb_shape_id tb_create_capsule_shape(tb_body_id body, const tb_shape_def* def, const tb_capsule* capsule);
+tb_shape_id tb_create_segment_shape(tb_body_id body, const tb_shape_def* def, const tb_segment* segment);
+tb_shape_id tb_create_polygon_shape(tb_body_id body, const tb_shape_def* def, const tb_polygon* polygon);
+tb_result tb_destroy_shape(tb_shape_id shape);
+bool tb_shape_is_valid(tb_shape_id shape);
+
+tb_shape_type tb_shape_get_type(tb_shape_id shape);
+tb_body_id tb_shape_get_body(tb_shape_id shape);
+float tb_shape_get_density(tb_shape_id shape);
+/* Changing the density recomputes the body's mass. */
+tb_result tb_shape_set_density(tb_shape_id shape, float density);
+float tb_shape_get_friction(tb_shape_id shape);
+tb_result tb_shape_set_friction(tb_shape_id shape, float friction);
+float tb_shape_get_restitution(tb_shape_id shape);
+tb_result tb_shape_set_restitution(tb_shape_id shape, float restitution);
+void* tb_shape_get_user_data(tb_shape_id shape);
+tb_result tb_shape_set_user_data(tb_shape_id shape, void* user_data);
+/* The shape's own mass properties, in body coordinates. */
+tb_mass_data tb_shape_get_mass_data(tb_shape_id shape);
+/* The tight world-space bounding box at the body's current transform. */
+tb_aabb tb_shape_get_aabb(tb_shape_id shape);
+/* The geometry, in body coordinates; the call fails on a shape of another type. */
+tb_result tb_shape_get_circle(tb_shape_id shape, tb_circle* out);
+tb_result tb_shape_get_capsule(tb_shape_id shape, tb_capsule* out);
+tb_result tb_shape_get_segment(tb_shape_id shape, tb_segment* out);
+tb_result tb_shape_get_polygon(tb_shape_id shape, tb_polygon* out);
+
+/* Mass properties of bare geometry at a density (kg/m^2), in its own coordinates. */
+tb_mass_data tb_compute_circle_mass(const tb_circle* circle, float density);
+tb_mass_data tb_compute_capsule_mass(const tb_capsule* capsule, float density);
+tb_mass_data tb_compute_polygon_mass(const tb_polygon* polygon, float density);
+
+/* Number of shapes on a body, and up to capacity of their handles. */
+int tb_body_get_shape_count(tb_body_id body);
+int tb_body_get_shapes(tb_body_id body, tb_shape_id* out, int capacity);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* TUMBLE_H */

@@ -1,0 +1,504 @@
+/* Bodies: creation, state access, forces and impulses, mass properties. */
+#include "body.h"
+
+#include <stddef.h>
+
+#include "geometry.h"
+#include "math_internal.h"
+#include "world.h"
+
+/* Resolve a body handle or return `fallback` from the calling function. */
+#define GET_BODY(id, fallback)                              \
+  tb_world* w = NULL;                                       \
+  tb_body* b = tb_body_get((id), &w, __func__);             \
+  if (b == NULL) return (fallback);                         \
+  (void)w
+#define GET_BODY_FOR_CHANGE(id)                             \
+  tb_world* w = NULL;                                       \
+  tb_body* b = tb_body_get_unlocked((id), &w, __func__);    \
+  if (b == NULL) return tb_last_result()
+
+static const tb_vec2 zero2 = {0.0f, 0.0f};
+
+tb_body_def tb_default_body_def(void) {
+  return (tb_body_def){.type = TB_STATIC_BODY, .gravity_scale = 1.0f, .enabled = true};
+}
+
+void tb_body_sync_transform(tb_body* b) {
+  b->transform.q = tb_make_rot(b->angle);
+  b->transform.p = tb_sub(b->center, tb_rotate(b->transform.q, b->local_center));
+}
+
+void tb_body_update_mass(tb_world* w, tb_body* b) {
+  tb_vec2 old_center = b->center;
+  b->mass = b->inv_mass = b->inertia = b->inv_inertia = 0.0f;
+  b->local_center = zero2;
+  b->mass_overridden = false;
+  if (b->type == TB_DYNAMIC_BODY) {
+    /* M = sum m_i; c = sum m_i c_i / M; I = sum (I_i + m_i |c_i - c|^2) */
+    double m = 0.0, cx = 0.0, cy = 0.0;
+    for (int s = b->shape_list; s >= 0; s = tb_shape_at(w, s)->next) {
+      tb_mass_data md = tb_shape_geom_mass(tb_shape_at(w, s));
+      m += md.mass;
+      cx += (double)md.mass * md.center.x;
+      cy += (double)md.mass * md.center.y;
+    }
+    if (m > 0.0) {
+      cx /= m;
+      cy /= m;
+      double inertia = 0.0;
+      for (int s = b->shape_list; s >= 0; s = tb_shape_at(w, s)->next) {
+        tb_mass_data md = tb_shape_geom_mass(tb_shape_at(w, s));
+        double dx = md.center.x - cx, dy = md.center.y - cy;
+        inertia += md.rotational_inertia + md.mass * (dx * dx + dy * dy);
+      }
+      b->mass = (float)m;
+      b->local_center = (tb_vec2){(float)cx, (float)cy};
+      b->inertia = (float)inertia;
+    } else {
+      b->mass = 1.0f; /* a dynamic body without area still needs a finite mass */
+    }
+    b->inv_mass = 1.0f / b->mass;
+    if (b->inertia > 0.0f && !b->fixed_rotation) b->inv_inertia = 1.0f / b->inertia;
+  }
+  /* keep the origin in place; the new centre moves with the body's rotation */
+  b->center = tb_transform_point(b->transform, b->local_center);
+  b->linear_velocity = tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(b->center, old_center)));
+  if (b->fixed_rotation) b->angular_velocity = 0.0f;
+}
+
+static tb_result check_type(tb_world* w, const char* fn, tb_body_type t) {
+  if ((int)t < (int)TB_STATIC_BODY || (int)t > (int)TB_DYNAMIC_BODY)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: type %d is not a tb_body_type", fn, (int)t);
+  return TB_OK;
+}
+
+static tb_result check_damping(tb_world* w, const char* fn, const char* name, float d) {
+  if (!tb_value_ok(d) || d < 0.0f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, name, (double)d);
+  return TB_OK;
+}
+
+static tb_result check_vector(tb_world* w, const char* fn, const char* name, tb_vec2 v) {
+  if (!tb_vector_ok(v))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = (%g, %g) is not finite or beyond TB_MAX_VALUE", fn, name,
+                   (double)v.x, (double)v.y);
+  return TB_OK;
+}
+
+static tb_result check_value(tb_world* w, const char* fn, const char* name, float v) {
+  if (!tb_value_ok(v))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g is not finite or beyond TB_MAX_VALUE", fn, name,
+                   (double)v);
+  return TB_OK;
+}
+
+static tb_result check_point(tb_world* w, const char* fn, const char* name, tb_vec2 p) {
+  if (!tb_point_ok(p))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = (%g, %g) is not finite or beyond TB_MAX_LENGTH", fn, name,
+                   (double)p.x, (double)p.y);
+  return TB_OK;
+}
+
+static tb_result check_angle(tb_world* w, const char* fn, float angle) {
+  if (!isfinite(angle) || fabsf(angle) > 1.0e6f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: angle = %g must be finite and within 1e6 rad", fn,
+                   (double)angle);
+  return TB_OK;
+}
+
+tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
+  const tb_body_id null_id = {0, 0, 0};
+  const char* fn = "tb_create_body";
+  tb_world* w = tb_world_get_unlocked(world_id, fn);
+  if (w == NULL) return null_id;
+  if (def == NULL) {
+    tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: def is NULL", fn);
+    return null_id;
+  }
+  if (check_type(w, fn, def->type) || check_point(w, fn, "def->position", def->position) ||
+      check_angle(w, fn, def->angle) || check_vector(w, fn, "def->linear_velocity", def->linear_velocity) ||
+      check_value(w, fn, "def->angular_velocity", def->angular_velocity) ||
+      check_damping(w, fn, "def->linear_damping", def->linear_damping) ||
+      check_damping(w, fn, "def->angular_damping", def->angular_damping) ||
+      check_value(w, fn, "def->gravity_scale", def->gravity_scale))
+    return null_id;
+  int index = tb_pool_alloc(&w->bodies);
+  if (index < 0) {
+    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for another body", fn);
+    return null_id;
+  }
+  tb_body* b = tb_body_at(w, index);
+  b->type = def->type;
+  b->center = def->position;
+  b->angle = def->angle;
+  if (def->type != TB_STATIC_BODY) {
+    b->linear_velocity = def->linear_velocity;
+    b->angular_velocity = def->fixed_rotation ? 0.0f : def->angular_velocity;
+  }
+  b->linear_damping = def->linear_damping;
+  b->angular_damping = def->angular_damping;
+  b->gravity_scale = def->gravity_scale;
+  b->fixed_rotation = def->fixed_rotation;
+  b->enabled = def->enabled;
+  b->user_data = def->user_data;
+  b->shape_list = -1;
+  tb_body_sync_transform(b);
+  tb_body_update_mass(w, b);
+  return tb_make_body_id(w, index);
+}
+
+tb_result tb_destroy_body(tb_body_id id) {
+  GET_BODY_FOR_CHANGE(id);
+  for (int s = b->shape_list; s >= 0;) {
+    int next = tb_shape_at(w, s)->next;
+    tb_pool_release(&w->shapes, s);
+    s = next;
+  }
+  tb_pool_release(&w->bodies, id.index1 - 1);
+  return TB_OK;
+}
+
+bool tb_body_is_valid(tb_body_id id) { return tb_body_get(id, NULL, NULL) != NULL; }
+
+tb_world_id tb_body_get_world(tb_body_id id) {
+  GET_BODY(id, ((tb_world_id){0, 0}));
+  return (tb_world_id){(uint16_t)(w->index + 1), w->generation};
+}
+
+tb_body_type tb_body_get_type(tb_body_id id) {
+  GET_BODY(id, TB_STATIC_BODY);
+  return b->type;
+}
+
+tb_result tb_body_set_type(tb_body_id id, tb_body_type type) {
+  GET_BODY_FOR_CHANGE(id);
+  tb_result r = check_type(w, __func__, type);
+  if (r != TB_OK) return r;
+  if (b->type == type) return TB_OK;
+  b->type = type;
+  if (type == TB_STATIC_BODY) {
+    b->linear_velocity = zero2;
+    b->angular_velocity = 0.0f;
+  }
+  b->force = zero2;
+  b->torque = 0.0f;
+  tb_body_update_mass(w, b);
+  return TB_OK;
+}
+
+tb_vec2 tb_body_get_position(tb_body_id id) {
+  GET_BODY(id, zero2);
+  return b->transform.p;
+}
+
+float tb_body_get_angle(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->angle;
+}
+
+tb_rot tb_body_get_rotation(tb_body_id id) {
+  GET_BODY(id, ((tb_rot){1.0f, 0.0f}));
+  return b->transform.q;
+}
+
+tb_transform tb_body_get_transform(tb_body_id id) {
+  GET_BODY(id, ((tb_transform){{0.0f, 0.0f}, {1.0f, 0.0f}}));
+  return b->transform;
+}
+
+tb_result tb_body_set_transform(tb_body_id id, tb_vec2 position, float angle) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_point(w, __func__, "position", position) || check_angle(w, __func__, angle)) return tb_last_result();
+  b->angle = angle;
+  b->transform.q = tb_make_rot(angle);
+  b->transform.p = position;
+  b->center = tb_transform_point(b->transform, b->local_center);
+  return TB_OK;
+}
+
+tb_vec2 tb_body_get_local_center(tb_body_id id) {
+  GET_BODY(id, zero2);
+  return b->local_center;
+}
+
+tb_vec2 tb_body_get_world_center(tb_body_id id) {
+  GET_BODY(id, zero2);
+  return b->center;
+}
+
+tb_vec2 tb_body_get_linear_velocity(tb_body_id id) {
+  GET_BODY(id, zero2);
+  return b->linear_velocity;
+}
+
+tb_result tb_body_set_linear_velocity(tb_body_id id, tb_vec2 v) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_vector(w, __func__, "v", v)) return tb_last_result();
+  if (b->type != TB_STATIC_BODY) b->linear_velocity = v;
+  return TB_OK;
+}
+
+float tb_body_get_angular_velocity(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->angular_velocity;
+}
+
+tb_result tb_body_set_angular_velocity(tb_body_id id, float omega) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_value(w, __func__, "w", omega)) return tb_last_result();
+  if (b->type != TB_STATIC_BODY && !b->fixed_rotation) b->angular_velocity = omega;
+  return TB_OK;
+}
+
+tb_vec2 tb_body_get_point_velocity(tb_body_id id, tb_vec2 world_point) {
+  GET_BODY(id, zero2);
+  if (check_point(w, __func__, "world_point", world_point)) return zero2;
+  return tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(world_point, b->center)));
+}
+
+float tb_body_get_linear_damping(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->linear_damping;
+}
+
+tb_result tb_body_set_linear_damping(tb_body_id id, float damping) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_damping(w, __func__, "damping", damping)) return tb_last_result();
+  b->linear_damping = damping;
+  return TB_OK;
+}
+
+float tb_body_get_angular_damping(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->angular_damping;
+}
+
+tb_result tb_body_set_angular_damping(tb_body_id id, float damping) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_damping(w, __func__, "damping", damping)) return tb_last_result();
+  b->angular_damping = damping;
+  return TB_OK;
+}
+
+float tb_body_get_gravity_scale(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->gravity_scale;
+}
+
+tb_result tb_body_set_gravity_scale(tb_body_id id, float scale) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_value(w, __func__, "scale", scale)) return tb_last_result();
+  b->gravity_scale = scale;
+  return TB_OK;
+}
+
+bool tb_body_is_fixed_rotation(tb_body_id id) {
+  GET_BODY(id, false);
+  return b->fixed_rotation;
+}
+
+tb_result tb_body_set_fixed_rotation(tb_body_id id, bool fixed) {
+  GET_BODY_FOR_CHANGE(id);
+  if (b->fixed_rotation == fixed) return TB_OK;
+  b->fixed_rotation = fixed;
+  if (fixed) b->angular_velocity = 0.0f;
+  if (b->type == TB_DYNAMIC_BODY) {
+    b->inv_inertia = (!fixed && b->inertia > 0.0f) ? 1.0f / b->inertia : 0.0f;
+  }
+  return TB_OK;
+}
+
+bool tb_body_is_enabled(tb_body_id id) {
+  GET_BODY(id, false);
+  return b->enabled;
+}
+
+tb_result tb_body_set_enabled(tb_body_id id, bool enabled) {
+  GET_BODY_FOR_CHANGE(id);
+  b->enabled = enabled;
+  return TB_OK;
+}
+
+void* tb_body_get_user_data(tb_body_id id) {
+  GET_BODY(id, NULL);
+  return b->user_data;
+}
+
+tb_result tb_body_set_user_data(tb_body_id id, void* user_data) {
+  GET_BODY(id, tb_last_result());
+  b->user_data = user_data;
+  return TB_OK;
+}
+
+/* F at a world point p adds F and the torque T = r x F, r = p - X. */
+tb_result tb_body_apply_force(tb_body_id id, tb_vec2 force, tb_vec2 world_point) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_vector(w, __func__, "force", force) || check_point(w, __func__, "world_point", world_point))
+    return tb_last_result();
+  if (b->type != TB_DYNAMIC_BODY) return TB_OK;
+  b->force = tb_add(b->force, force);
+  b->torque += tb_cross(tb_sub(world_point, b->center), force);
+  return TB_OK;
+}
+
+tb_result tb_body_apply_force_to_center(tb_body_id id, tb_vec2 force) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_vector(w, __func__, "force", force)) return tb_last_result();
+  if (b->type == TB_DYNAMIC_BODY) b->force = tb_add(b->force, force);
+  return TB_OK;
+}
+
+tb_result tb_body_apply_torque(tb_body_id id, float torque) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_value(w, __func__, "torque", torque)) return tb_last_result();
+  if (b->type == TB_DYNAMIC_BODY) b->torque += torque;
+  return TB_OK;
+}
+
+/* J at a world point changes V by J / M and w by (r x J) / I. The new state is
+ * checked before it is stored, so an overflowing impulse changes nothing. */
+static tb_result apply_impulse(tb_world* w, tb_body* b, const char* fn, tb_vec2 impulse, float angular) {
+  tb_vec2 v = tb_mul_add(b->linear_velocity, b->inv_mass, impulse);
+  float omega = b->angular_velocity + b->inv_inertia * angular;
+  if (!tb_vector_ok(v) || !tb_value_ok(omega))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the impulse would make the velocity overflow", fn);
+  b->linear_velocity = v;
+  b->angular_velocity = omega;
+  return TB_OK;
+}
+
+tb_result tb_body_apply_linear_impulse(tb_body_id id, tb_vec2 impulse, tb_vec2 world_point) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_vector(w, __func__, "impulse", impulse) || check_point(w, __func__, "world_point", world_point))
+    return tb_last_result();
+  if (b->type != TB_DYNAMIC_BODY) return TB_OK;
+  return apply_impulse(w, b, __func__, impulse, tb_cross(tb_sub(world_point, b->center), impulse));
+}
+
+tb_result tb_body_apply_linear_impulse_to_center(tb_body_id id, tb_vec2 impulse) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_vector(w, __func__, "impulse", impulse)) return tb_last_result();
+  if (b->type != TB_DYNAMIC_BODY) return TB_OK;
+  return apply_impulse(w, b, __func__, impulse, 0.0f);
+}
+
+tb_result tb_body_apply_angular_impulse(tb_body_id id, float impulse) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_value(w, __func__, "impulse", impulse)) return tb_last_result();
+  if (b->type != TB_DYNAMIC_BODY) return TB_OK;
+  return apply_impulse(w, b, __func__, zero2, impulse);
+}
+
+tb_vec2 tb_body_get_force(tb_body_id id) {
+  GET_BODY(id, zero2);
+  return b->force;
+}
+
+float tb_body_get_torque(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->torque;
+}
+
+float tb_body_get_mass(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->mass;
+}
+
+float tb_body_get_rotational_inertia(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->inertia;
+}
+
+tb_mass_data tb_body_get_mass_data(tb_body_id id) {
+  GET_BODY(id, ((tb_mass_data){0.0f, {0.0f, 0.0f}, 0.0f}));
+  return (tb_mass_data){b->mass, b->local_center, b->inertia};
+}
+
+tb_result tb_body_set_mass_data(tb_body_id id, tb_mass_data md) {
+  GET_BODY_FOR_CHANGE(id);
+  if (b->type != TB_DYNAMIC_BODY)
+    return tb_fail(w, TB_ERR_WRONG_BODY_TYPE, "%s: only a dynamic body has a mass to set", __func__);
+  if (!tb_value_ok(md.mass) || md.mass <= 0.0f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: mass_data.mass = %g must be > 0 and finite", __func__,
+                   (double)md.mass);
+  if (!tb_value_ok(md.rotational_inertia) || md.rotational_inertia < 0.0f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: mass_data.rotational_inertia = %g must be >= 0 and finite",
+                   __func__, (double)md.rotational_inertia);
+  if (check_point(w, __func__, "mass_data.center", md.center)) return tb_last_result();
+  tb_vec2 old_center = b->center;
+  b->mass = md.mass;
+  b->inv_mass = 1.0f / md.mass;
+  b->inertia = md.rotational_inertia;
+  b->inv_inertia = (md.rotational_inertia > 0.0f && !b->fixed_rotation) ? 1.0f / md.rotational_inertia : 0.0f;
+  b->local_center = md.center;
+  b->mass_overridden = true;
+  b->center = tb_transform_point(b->transform, b->local_center);
+  b->linear_velocity = tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(b->center, old_center)));
+  return TB_OK;
+}
+
+tb_result tb_body_reset_mass_data(tb_body_id id) {
+  GET_BODY_FOR_CHANGE(id);
+  tb_body_update_mass(w, b);
+  return TB_OK;
+}
+
+tb_vec2 tb_body_get_world_point(tb_body_id id, tb_vec2 p) {
+  GET_BODY(id, zero2);
+  if (check_point(w, __func__, "local_point", p)) return zero2;
+  return tb_transform_point(b->transform, p);
+}
+
+tb_vec2 tb_body_get_local_point(tb_body_id id, tb_vec2 p) {
+  GET_BODY(id, zero2);
+  if (check_point(w, __func__, "world_point", p)) return zero2;
+  return tb_inv_transform_point(b->transform, p);
+}
+
+tb_vec2 tb_body_get_world_vector(tb_body_id id, tb_vec2 v) {
+  GET_BODY(id, zero2);
+  if (check_vector(w, __func__, "local_vector", v)) return zero2;
+  return tb_rotate(b->transform.q, v);
+}
+
+tb_vec2 tb_body_get_local_vector(tb_body_id id, tb_vec2 v) {
+  GET_BODY(id, zero2);
+  if (check_vector(w, __func__, "world_vector", v)) return zero2;
+  return tb_inv_rotate(b->transform.q, v);
+}
+
+/* Only dynamic bodies carry momentum and energy; the infinite mass of static and
+ * kinematic bodies makes them zero by convention. */
+float tb_body_get_kinetic_energy(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  float omega = b->angular_velocity;
+  return 0.5f * (b->mass * tb_length_sq(b->linear_velocity) + b->inertia * omega * omega);
+}
+
+tb_vec2 tb_body_get_linear_momentum(tb_body_id id) {
+  GET_BODY(id, zero2);
+  return tb_scale(b->mass, b->linear_velocity);
+}
+
+float tb_body_get_angular_momentum(tb_body_id id, tb_vec2 p) {
+  GET_BODY(id, 0.0f);
+  if (check_point(w, __func__, "world_point", p)) return 0.0f;
+  return b->inertia * b->angular_velocity + tb_cross(tb_sub(b->center, p), tb_scale(b->mass, b->linear_velocity));
+}
+
+int tb_body_get_shape_count(tb_body_id id) {
+  GET_BODY(id, 0);
+  return b->shape_count;
+}
+
+int tb_body_get_shapes(tb_body_id id, tb_shape_id* out, int capacity) {
+  GET_BODY(id, 0);
+  if (out == NULL && capacity > 0) {
+    tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: out is NULL", __func__);
+    return 0;
+  }
+  int n = 0;
+  for (int s = b->shape_list; s >= 0 && n < capacity; s = tb_shape_at(w, s)->next) out[n++] = tb_make_shape_id(w, s);
+  return n;
+}

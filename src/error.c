@@ -1,0 +1,50 @@
+#include "error.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "world.h"
+
+static _Thread_local char last_message[TB_ERROR_MESSAGE_CAPACITY];
+static _Thread_local tb_result last_code = TB_OK;
+
+tb_result tb_fail(struct tb_world* world, tb_result r, const char* fmt, ...) {
+  char body[TB_ERROR_MESSAGE_CAPACITY - 32];
+  va_list args;
+  va_start(args, fmt);
+  vsnprintf(body, sizeof body, fmt, args);
+  va_end(args);
+  snprintf(last_message, sizeof last_message, "%s: %s", tb_result_name(r), body);
+  last_code = r;
+  if (world != NULL) {
+    memcpy(world->last_error, last_message, sizeof world->last_error);
+  }
+  return r;
+}
+
+const char* tb_last_error(void) { return last_message; }
+tb_result tb_last_result(void) { return last_code; }
+
+void tb_clear_error(void) {
+  last_message[0] = '\0';
+  last_code = TB_OK;
+}
+
+const char* tb_result_name(tb_result r) {
+  switch (r) {
+    case TB_OK: return "TB_OK";
+    case TB_ERR_NULL_ARGUMENT: return "TB_ERR_NULL_ARGUMENT";
+    case TB_ERR_INVALID_ARGUMENT: return "TB_ERR_INVALID_ARGUMENT";
+    case TB_ERR_STALE_HANDLE: return "TB_ERR_STALE_HANDLE";
+    case TB_ERR_FOREIGN_HANDLE: return "TB_ERR_FOREIGN_HANDLE";
+    case TB_ERR_DEGENERATE_POLYGON: return "TB_ERR_DEGENERATE_POLYGON";
+    case TB_ERR_TOO_MANY_VERTICES: return "TB_ERR_TOO_MANY_VERTICES";
+    case TB_ERR_OUT_OF_MEMORY: return "TB_ERR_OUT_OF_MEMORY";
+    case TB_ERR_CAPACITY: return "TB_ERR_CAPACITY";
+    case TB_ERR_LOCKED: return "TB_ERR_LOCKED";
+    case TB_ERR_WRONG_BODY_TYPE: return "TB_ERR_WRONG_BODY_TYPE";
+    case TB_ERR_NUMERIC: return "TB_ERR_NUMERIC";
+  }
+  return "TB_ERR_UNKNOWN";
+}

@@ -1,0 +1,21 @@
+/* Error reporting: every rejected call records a code and a message that names
+ * the function and the argument (thread-local, and on the world when known). */
+#ifndef TB_ERROR_H
+#define TB_ERROR_H
+
+#include "tumble.h"
+
+struct tb_world;
+
+#if defined(__GNUC__)
+#define TB_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define TB_PRINTF(a, b)
+#endif
+
+/* Records the error and returns r, so callers can write `return tb_fail(...)`. */
+tb_result tb_fail(struct tb_world* world, tb_result r, const char* fmt, ...) TB_PRINTF(3, 4);
+
+#define TB_ERROR_MESSAGE_CAPACITY 256
+
+#endif

@@ -1,0 +1,194 @@
+/* Mass properties and bounding boxes of circles, capsules, segments and
+ * (rounded) convex polygons.
+ *
+ * Everything is integrated in double about a local reference point near the
+ * shape, then shifted: I_center = I_ref - m |c - ref|^2 (parallel-axis theorem).
+ * That keeps precision for shapes far from their body origin. */
+#include "geometry.h"
+
+#include <math.h>
+#include <stddef.h>
+
+#include "math_internal.h"
+
+#define TB_PI 3.14159265358979323846
+
+/* A mass element: mass, centroid (relative to the reference) and inertia about
+ * its own centroid. Elements add up by the parallel-axis theorem. */
+typedef struct part {
+  double m, cx, cy, i;
+} part;
+
+static part part_add(part a, part b) {
+  double m = a.m + b.m;
+  if (m <= 0.0) return (part){0, 0, 0, 0};
+  double cx = (a.m * a.cx + b.m * b.cx) / m;
+  double cy = (a.m * a.cy + b.m * b.cy) / m;
+  double da = (a.cx - cx) * (a.cx - cx) + (a.cy - cy) * (a.cy - cy);
+  double db = (b.cx - cx) * (b.cx - cx) + (b.cy - cy) * (b.cy - cy);
+  return (part){m, cx, cy, a.i + a.m * da + b.i + b.m * db};
+}
+
+static tb_mass_data part_to_mass(part p, tb_vec2 ref) {
+  return (tb_mass_data){(float)p.m, {(float)(ref.x + p.cx), (float)(ref.y + p.cy)}, (float)p.i};
+}
+
+/* Disc: m = rho pi r^2, I = m r^2 / 2. */
+tb_mass_data tb_compute_circle_mass(const tb_circle* c, float density) {
+  if (c == NULL) return (tb_mass_data){0};
+  double r = c->radius, m = density * TB_PI * r * r;
+  return (tb_mass_data){(float)m, c->center, (float)(0.5 * m * r * r)};
+}
+
+/* Capsule of length L = |c2 - c1| and radius r: a 2r x L rectangle,
+ * I = m_rect (L^2 + 4 r^2) / 12, plus two half discs. A half disc of mass m_h has
+ * its centroid d = 4r/(3 pi) from its flat side and I = m_h r^2/2 - m_h d^2 about
+ * that centroid, which sits L/2 + d from the capsule centre. */
+tb_mass_data tb_compute_capsule_mass(const tb_capsule* c, float density) {
+  if (c == NULL) return (tb_mass_data){0};
+  double r = c->radius;
+  double dx = (double)c->center2.x - c->center1.x, dy = (double)c->center2.y - c->center1.y;
+  double len = sqrt(dx * dx + dy * dy);
+  double m_rect = density * 2.0 * r * len;
+  double m_half = density * 0.5 * TB_PI * r * r;
+  double d = 4.0 * r / (3.0 * TB_PI);
+  double off = 0.5 * len + d;
+  double i_half = m_half * (0.5 * r * r - d * d + off * off);
+  double inertia = m_rect * (len * len + 4.0 * r * r) / 12.0 + 2.0 * i_half;
+  tb_vec2 center = {(float)(0.5 * ((double)c->center1.x + c->center2.x)),
+                    (float)(0.5 * ((double)c->center1.y + c->center2.y))};
+  return (tb_mass_data){(float)(m_rect + 2.0 * m_half), center, (float)inertia};
+}
+
+/* Polygon core by a triangle fan about the vertex average `ref`: a triangle
+ * (ref, ref+e1, ref+e2) has area D/2 with D = e1 x e2, centroid (e1+e2)/3 and
+ * second moment about ref D/12 (e1.e1 + e1.e2 + e2.e2).
+ * Rounding radius R adds, exactly, a rectangle L x R on each edge and a circular
+ * sector at each corner (the sectors' angles sum to 2 pi). A sector of angle phi
+ * has area phi R^2/2, centroid 4 R sin(phi/2) / (3 phi) from its apex along the
+ * bisector, and second moment about the apex area R^2/2. */
+tb_mass_data tb_compute_polygon_mass(const tb_polygon* poly, float density) {
+  if (poly == NULL || poly->count < 3) return (tb_mass_data){0};
+  int n = poly->count;
+  double rx = 0.0, ry = 0.0;
+  for (int i = 0; i < n; ++i) {
+    rx += poly->vertices[i].x;
+    ry += poly->vertices[i].y;
+  }
+  tb_vec2 ref = {(float)(rx / n), (float)(ry / n)};
+
+  double area = 0.0, sx = 0.0, sy = 0.0, second = 0.0;
+  for (int i = 0; i < n; ++i) {
+    double ax = (double)poly->vertices[i].x - ref.x, ay = (double)poly->vertices[i].y - ref.y;
+    int j = i + 1 < n ? i + 1 : 0;
+    double bx = (double)poly->vertices[j].x - ref.x, by = (double)poly->vertices[j].y - ref.y;
+    double d = ax * by - ay * bx;
+    area += 0.5 * d;
+    sx += 0.5 * d * (ax + bx) / 3.0;
+    sy += 0.5 * d * (ay + by) / 3.0;
+    second += d / 12.0 * (ax * ax + ax * bx + bx * bx + ay * ay + ay * by + by * by);
+  }
+  double rho = density;
+  double cx = sx / area, cy = sy / area;
+  part total = {rho * area, cx, cy, rho * (second - area * (cx * cx + cy * cy))};
+
+  double R = poly->radius;
+  if (R > 0.0) {
+    for (int i = 0; i < n; ++i) {
+      int j = i + 1 < n ? i + 1 : 0;
+      double ax = (double)poly->vertices[i].x - ref.x, ay = (double)poly->vertices[i].y - ref.y;
+      double bx = (double)poly->vertices[j].x - ref.x, by = (double)poly->vertices[j].y - ref.y;
+      double ex = bx - ax, ey = by - ay, len = sqrt(ex * ex + ey * ey);
+      double nx = ey / len, ny = -ex / len; /* outward for counter-clockwise order */
+      double m_rect = rho * len * R;
+      part rect = {m_rect, 0.5 * (ax + bx) + 0.5 * R * nx, 0.5 * (ay + by) + 0.5 * R * ny,
+                   m_rect * (len * len + R * R) / 12.0};
+      total = part_add(total, rect);
+
+      /* the sector at vertex j, between this edge's normal and the next one's */
+      int k = j + 1 < n ? j + 1 : 0;
+      double fx = (double)poly->vertices[k].x - ref.x - bx, fy = (double)poly->vertices[k].y - ref.y - by;
+      double flen = sqrt(fx * fx + fy * fy);
+      double mx = fy / flen, my = -fx / flen;
+      double phi = atan2(nx * my - ny * mx, nx * mx + ny * my);
+      double hx = nx + mx, hy = ny + my, hlen = sqrt(hx * hx + hy * hy);
+      double m_sec = rho * 0.5 * phi * R * R;
+      double dist = 4.0 * R * sin(0.5 * phi) / (3.0 * phi);
+      part sector = {m_sec, bx + dist * hx / hlen, by + dist * hy / hlen,
+                     m_sec * (0.5 * R * R - dist * dist)};
+      total = part_add(total, sector);
+    }
+  }
+  return part_to_mass(total, ref);
+}
+
+tb_mass_data tb_shape_geom_mass(const tb_shape* s) {
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE: return tb_compute_circle_mass(&s->geom.circle, s->density);
+    case TB_SHAPE_CAPSULE: return tb_compute_capsule_mass(&s->geom.capsule, s->density);
+    case TB_SHAPE_POLYGON: return tb_compute_polygon_mass(&s->geom.polygon, s->density);
+    case TB_SHAPE_SEGMENT: break;
+  }
+  /* a segment has no area: no mass; its midpoint keeps the centre well defined */
+  return (tb_mass_data){0.0f, tb_lerp(s->geom.segment.point1, s->geom.segment.point2, 0.5f), 0.0f};
+}
+
+static tb_aabb aabb_of_points(const tb_vec2* pts, int n, tb_transform xf, float r) {
+  tb_vec2 lo = tb_transform_point(xf, pts[0]), hi = lo;
+  for (int i = 1; i < n; ++i) {
+    tb_vec2 p = tb_transform_point(xf, pts[i]);
+    lo = tb_vmin(lo, p);
+    hi = tb_vmax(hi, p);
+  }
+  return (tb_aabb){{lo.x - r, lo.y - r}, {hi.x + r, hi.y + r}};
+}
+
+tb_aabb tb_shape_geom_aabb(const tb_shape* s, tb_transform xf) {
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE: return aabb_of_points(&s->geom.circle.center, 1, xf, s->geom.circle.radius);
+    case TB_SHAPE_CAPSULE: return aabb_of_points(&s->geom.capsule.center1, 2, xf, s->geom.capsule.radius);
+    case TB_SHAPE_SEGMENT: return aabb_of_points(&s->geom.segment.point1, 2, xf, 0.0f);
+    case TB_SHAPE_POLYGON:
+      return aabb_of_points(s->geom.polygon.vertices, s->geom.polygon.count, xf, s->geom.polygon.radius);
+  }
+  return (tb_aabb){{0, 0}, {0, 0}};
+}
+
+
+const char* tb_check_circle(const tb_circle* c) {
+  if (!tb_point_ok(c->center)) return "circle center is not finite or beyond TB_MAX_LENGTH";
+  if (!(c->radius > 0.0f) || !tb_length_ok(c->radius)) return "circle radius must be > 0, finite and <= TB_MAX_LENGTH";
+  return NULL;
+}
+
+const char* tb_check_capsule(const tb_capsule* c) {
+  if (!tb_point_ok(c->center1) || !tb_point_ok(c->center2))
+    return "capsule centers are not finite or beyond TB_MAX_LENGTH";
+  if (!(c->radius > 0.0f) || !tb_length_ok(c->radius)) return "capsule radius must be > 0, finite and <= TB_MAX_LENGTH";
+  if (tb_distance_sq(c->center1, c->center2) < TB_LINEAR_SLOP * TB_LINEAR_SLOP)
+    return "capsule centers coincide (use a circle)";
+  return NULL;
+}
+
+const char* tb_check_segment(const tb_segment* s) {
+  if (!tb_point_ok(s->point1) || !tb_point_ok(s->point2)) return "segment points are not finite or beyond TB_MAX_LENGTH";
+  if (tb_distance_sq(s->point1, s->point2) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) return "segment points coincide";
+  return NULL;
+}
+
+/* A polygon handed to a shape must be one tb_make_polygon could have made:
+ * 3..max vertices, finite, counter-clockwise and strictly convex, unit normals. */
+const char* tb_check_polygon(const tb_polygon* p) {
+  if (p->count < 3 || p->count > TB_MAX_POLYGON_VERTICES) return "polygon count must be 3..TB_MAX_POLYGON_VERTICES";
+  if (!(p->radius >= 0.0f) || !tb_length_ok(p->radius)) return "polygon radius must be >= 0, finite and <= TB_MAX_LENGTH";
+  for (int i = 0; i < p->count; ++i) {
+    if (!tb_point_ok(p->vertices[i])) return "polygon vertex is not finite or beyond TB_MAX_LENGTH";
+    tb_vec2 a = p->vertices[i], b = p->vertices[(i + 1) % p->count], c = p->vertices[(i + 2) % p->count];
+    if (tb_cross(tb_sub(b, a), tb_sub(c, b)) <= 0.0f)
+      return "polygon is not convex and counter-clockwise (build it with tb_make_polygon)";
+    tb_vec2 n = p->normals[i];
+    if (!tb_vec_finite(n) || fabsf(tb_length_sq(n) - 1.0f) > 1e-4f)
+      return "polygon normals are not unit (build it with tb_make_polygon)";
+  }
+  return NULL;
+}

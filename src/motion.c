@@ -1,0 +1,147 @@
+/* Free motion: the lecture's ODE  y = (X, theta, V, w),
+ *   dy/dt = (V, w, g s + (F + F_field)/M - c_v V, (T + T_field)/I - c_w w),
+ * integrated per substep h = dt / substeps.
+ *
+ * Semi-implicit (symplectic) Euler is the default and matches the constraint
+ * solver: V += h a; V /= (1 + h c_v) (damping like Box2D); X += h V. The angle
+ * is a scalar integrated the same way, so constant spin is exact up to float
+ * rounding. Midpoint (RK2) and RK4 evaluate the ODE at intermediate states,
+ * with damping as the linear term above; they pay off for smooth force fields. */
+#include <stddef.h>
+
+#include "math_internal.h"
+#include "world.h"
+
+typedef struct state {
+  tb_vec2 x;
+  float a;
+  tb_vec2 v;
+  float w;
+} state;
+
+/* dy/dt */
+typedef struct rate {
+  tb_vec2 dx; /* = V */
+  float da;   /* = w */
+  tb_vec2 dv; /* acceleration */
+  float dw;   /* angular acceleration */
+} rate;
+
+typedef struct body_ctx {
+  const tb_world* world;
+  const tb_body* body;
+  tb_body_id id;
+  tb_vec2 gravity; /* g times the body's gravity scale */
+} body_ctx;
+
+/* The applied force plus the field's, at time t and state y. */
+static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* force, float* torque) {
+  *force = c->body->force;
+  *torque = c->body->torque;
+  if (c->world->force_field != NULL) {
+    const tb_body* b = c->body;
+    tb_body_state s = {c->id, y->x, y->a, y->v, y->w, b->mass, b->inertia, b->user_data};
+    tb_vec2 f = {0.0f, 0.0f};
+    float tq = 0.0f;
+    c->world->force_field(t, &s, c->world->force_field_context, &f, &tq);
+    *force = tb_add(*force, f);
+    *torque += tq;
+  }
+}
+
+/* dy/dt of the damped equations of motion (used by the Runge-Kutta schemes). */
+static rate derivative(const body_ctx* c, double t, const state* y) {
+  tb_vec2 f;
+  float tq;
+  total_load(c, t, y, &f, &tq);
+  const tb_body* b = c->body;
+  tb_vec2 acc = tb_sub(tb_mul_add(c->gravity, b->inv_mass, f), tb_scale(b->linear_damping, y->v));
+  float alpha = b->inv_inertia * tq - b->angular_damping * y->w;
+  return (rate){y->v, y->w, acc, alpha};
+}
+
+/* y + h d */
+static state advance(const state* y, float h, const rate* d) {
+  return (state){tb_mul_add(y->x, h, d->dx), y->a + h * d->da, tb_mul_add(y->v, h, d->dv), y->w + h * d->dw};
+}
+
+static void step_euler(const body_ctx* c, double t, float h, state* y) {
+  tb_vec2 f;
+  float tq;
+  total_load(c, t, y, &f, &tq);
+  const tb_body* b = c->body;
+  y->v = tb_mul_add(y->v, h, tb_mul_add(c->gravity, b->inv_mass, f));
+  y->w += h * b->inv_inertia * tq;
+  y->v = tb_scale(1.0f / (1.0f + h * b->linear_damping), y->v);
+  y->w *= 1.0f / (1.0f + h * b->angular_damping);
+  y->x = tb_mul_add(y->x, h, y->v);
+  y->a += h * y->w;
+}
+
+static void step_midpoint(const body_ctx* c, double t, float h, state* y) {
+  rate k1 = derivative(c, t, y);
+  state mid = advance(y, 0.5f * h, &k1);
+  rate k2 = derivative(c, t + 0.5 * h, &mid);
+  *y = advance(y, h, &k2);
+}
+
+static void step_rk4(const body_ctx* c, double t, float h, state* y) {
+  rate k1 = derivative(c, t, y);
+  state y2 = advance(y, 0.5f * h, &k1);
+  rate k2 = derivative(c, t + 0.5 * h, &y2);
+  state y3 = advance(y, 0.5f * h, &k2);
+  rate k3 = derivative(c, t + 0.5 * h, &y3);
+  state y4 = advance(y, h, &k3);
+  rate k4 = derivative(c, t + h, &y4);
+  /* y += h/6 (k1 + 2 k2 + 2 k3 + k4) */
+  rate sum = {
+      {k1.dx.x + 2.0f * k2.dx.x + 2.0f * k3.dx.x + k4.dx.x, k1.dx.y + 2.0f * k2.dx.y + 2.0f * k3.dx.y + k4.dx.y},
+      k1.da + 2.0f * k2.da + 2.0f * k3.da + k4.da,
+      {k1.dv.x + 2.0f * k2.dv.x + 2.0f * k3.dv.x + k4.dv.x, k1.dv.y + 2.0f * k2.dv.y + 2.0f * k3.dv.y + k4.dv.y},
+      k1.dw + 2.0f * k2.dw + 2.0f * k3.dw + k4.dw};
+  *y = advance(y, h / 6.0f, &sum);
+}
+
+static bool state_finite(const state* y) {
+  return tb_vec_finite(y->x) && isfinite(y->a) && tb_vec_finite(y->v) && isfinite(y->w);
+}
+
+int tb_integrate_bodies(tb_world* w, float dt, int substeps) {
+  float h = dt / (float)substeps;
+  int bad = 0;
+  for (int i = 0; i < w->bodies.high; ++i) {
+    if (!tb_pool_alive(&w->bodies, i)) continue;
+    tb_body* b = tb_body_at(w, i);
+    if (b->type == TB_STATIC_BODY || !b->enabled) continue;
+    state y = {b->center, b->angle, b->linear_velocity, b->angular_velocity};
+    if (b->type == TB_KINEMATIC_BODY) {
+      for (int k = 0; k < substeps; ++k) {
+        y.x = tb_mul_add(y.x, h, y.v);
+        y.a += h * y.w;
+      }
+    } else {
+      body_ctx c = {w, b, tb_make_body_id(w, i), tb_scale(b->gravity_scale, w->gravity)};
+      for (int k = 0; k < substeps; ++k) {
+        double t = w->time + (double)k * h;
+        switch (w->integrator) {
+          case TB_INTEGRATOR_SEMI_IMPLICIT_EULER: step_euler(&c, t, h, &y); break;
+          case TB_INTEGRATOR_MIDPOINT: step_midpoint(&c, t, h, &y); break;
+          case TB_INTEGRATOR_RK4: step_rk4(&c, t, h, &y); break;
+        }
+      }
+      if (b->fixed_rotation) y.w = 0.0f;
+    }
+    b->force = (tb_vec2){0.0f, 0.0f};
+    b->torque = 0.0f;
+    if (!state_finite(&y)) { /* contain the NaN: this body keeps its old state */
+      bad += 1;
+      continue;
+    }
+    b->center = y.x;
+    b->angle = y.a;
+    b->linear_velocity = y.v;
+    b->angular_velocity = y.w;
+    tb_body_sync_transform(b);
+  }
+  return bad;
+}

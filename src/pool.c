@@ -1,0 +1,62 @@
+#include "pool.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void tb_pool_init(tb_pool* pool, size_t item_size) {
+  memset(pool, 0, sizeof *pool);
+  pool->item_size = item_size;
+  pool->free_head = -1;
+}
+
+void tb_pool_free(tb_pool* pool) {
+  free(pool->items);
+  free(pool->generations);
+  free(pool->next_free);
+  tb_pool_init(pool, pool->item_size);
+}
+
+static bool grow(tb_pool* pool) {
+  int cap = pool->capacity < 16 ? 16 : pool->capacity * 2;
+  void* items = realloc(pool->items, (size_t)cap * pool->item_size);
+  if (items == NULL) return false;
+  pool->items = items;
+  uint16_t* gens = realloc(pool->generations, (size_t)cap * sizeof *gens);
+  if (gens == NULL) return false;
+  pool->generations = gens;
+  int32_t* next = realloc(pool->next_free, (size_t)cap * sizeof *next);
+  if (next == NULL) return false;
+  pool->next_free = next;
+  memset(gens + pool->capacity, 0, (size_t)(cap - pool->capacity) * sizeof *gens);
+  pool->capacity = cap;
+  return true;
+}
+
+int tb_pool_alloc(tb_pool* pool) {
+  int index;
+  if (pool->free_head >= 0) {
+    index = pool->free_head;
+    pool->free_head = pool->next_free[index];
+  } else {
+    if (pool->high == pool->capacity && !grow(pool)) return -1;
+    index = pool->high++;
+  }
+  pool->next_free[index] = -2;
+  pool->count += 1;
+  memset(tb_pool_at(pool, index), 0, pool->item_size);
+  return index;
+}
+
+/* LIFO reuse: the layout depends only on the sequence of calls. A slot whose
+ * generation would wrap is retired instead of reused, so an old handle can never
+ * match a new object. */
+void tb_pool_release(tb_pool* pool, int index) {
+  pool->count -= 1;
+  if (pool->generations[index] == UINT16_MAX) {
+    pool->next_free[index] = -3; /* retired: never alive again */
+    return;
+  }
+  pool->generations[index] += 1;
+  pool->next_free[index] = pool->free_head;
+  pool->free_head = index;
+}

@@ -1,0 +1,200 @@
+/* Shapes: attaching geometry with a material to a body. */
+#include "shape.h"
+
+#include <stddef.h>
+
+#include "geometry.h"
+#include "math_internal.h"
+#include "world.h"
+
+#define GET_SHAPE(id, fallback)                  \
+  tb_world* w = NULL;                            \
+  tb_shape* s = tb_shape_get((id), &w, __func__); \
+  if (s == NULL) return (fallback);              \
+  (void)w
+#define GET_SHAPE_FOR_CHANGE(id)                          \
+  tb_world* w = NULL;                                     \
+  tb_shape* s = tb_shape_get_unlocked((id), &w, __func__); \
+  if (s == NULL) return tb_last_result()
+
+tb_shape_def tb_default_shape_def(void) {
+  return (tb_shape_def){.density = 1.0f, .friction = 0.6f, .restitution = 0.0f};
+}
+
+static tb_result check_material(tb_world* w, const char* fn, const char* name, float x) {
+  if (!tb_value_ok(x) || x < 0.0f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, name, (double)x);
+  return TB_OK;
+}
+
+static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_shape_type type, const void* geom,
+                                const char* fn) {
+  const tb_shape_id null_id = {0, 0, 0};
+  tb_world* w = NULL;
+  tb_body* b = tb_body_get_unlocked(body_id, &w, fn);
+  if (b == NULL) return null_id;
+  if (def == NULL || geom == NULL) {
+    tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: %s is NULL", fn, def == NULL ? "def" : "the geometry");
+    return null_id;
+  }
+  if (check_material(w, fn, "def->density", def->density) || check_material(w, fn, "def->friction", def->friction) ||
+      check_material(w, fn, "def->restitution", def->restitution))
+    return null_id;
+  const char* problem = NULL;
+  tb_shape proto = {.type = type, .density = def->density, .friction = def->friction,
+                    .restitution = def->restitution, .user_data = def->user_data};
+  switch (type) {
+    case TB_SHAPE_CIRCLE: proto.geom.circle = *(const tb_circle*)geom; problem = tb_check_circle(geom); break;
+    case TB_SHAPE_CAPSULE: proto.geom.capsule = *(const tb_capsule*)geom; problem = tb_check_capsule(geom); break;
+    case TB_SHAPE_SEGMENT: proto.geom.segment = *(const tb_segment*)geom; problem = tb_check_segment(geom); break;
+    case TB_SHAPE_POLYGON: proto.geom.polygon = *(const tb_polygon*)geom; problem = tb_check_polygon(geom); break;
+  }
+  if (problem != NULL) {
+    tb_fail(w, type == TB_SHAPE_POLYGON ? TB_ERR_DEGENERATE_POLYGON : TB_ERR_INVALID_ARGUMENT, "%s: %s", fn, problem);
+    return null_id;
+  }
+  tb_mass_data md = tb_shape_geom_mass(&proto);
+  if (!tb_value_ok(md.mass) || !tb_value_ok(md.rotational_inertia)) {
+    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the shape's mass or inertia overflows (density %g)", fn,
+            (double)def->density);
+    return null_id;
+  }
+  int body_index = body_id.index1 - 1;
+  int index = tb_pool_alloc(&w->shapes);
+  if (index < 0) {
+    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for another shape", fn);
+    return null_id;
+  }
+  b = tb_body_at(w, body_index); /* the pools are separate, but stay safe */
+  tb_shape* s = tb_shape_at(w, index);
+  *s = proto;
+  s->body = body_index;
+  s->prev = -1;
+  s->next = b->shape_list;
+  if (b->shape_list >= 0) tb_shape_at(w, b->shape_list)->prev = index;
+  b->shape_list = index;
+  b->shape_count += 1;
+  tb_body_update_mass(w, b);
+  return tb_make_shape_id(w, index);
+}
+
+tb_shape_id tb_create_circle_shape(tb_body_id body, const tb_shape_def* def, const tb_circle* circle) {
+  return create_shape(body, def, TB_SHAPE_CIRCLE, circle, __func__);
+}
+tb_shape_id tb_create_capsule_shape(tb_body_id body, const tb_shape_def* def, const tb_capsule* capsule) {
+  return create_shape(body, def, TB_SHAPE_CAPSULE, capsule, __func__);
+}
+tb_shape_id tb_create_segment_shape(tb_body_id body, const tb_shape_def* def, const tb_segment* segment) {
+  return create_shape(body, def, TB_SHAPE_SEGMENT, segment, __func__);
+}
+tb_shape_id tb_create_polygon_shape(tb_body_id body, const tb_shape_def* def, const tb_polygon* polygon) {
+  return create_shape(body, def, TB_SHAPE_POLYGON, polygon, __func__);
+}
+
+tb_result tb_destroy_shape(tb_shape_id id) {
+  GET_SHAPE_FOR_CHANGE(id);
+  tb_body* b = tb_body_at(w, s->body);
+  if (s->prev >= 0) tb_shape_at(w, s->prev)->next = s->next;
+  else b->shape_list = s->next;
+  if (s->next >= 0) tb_shape_at(w, s->next)->prev = s->prev;
+  b->shape_count -= 1;
+  tb_pool_release(&w->shapes, id.index1 - 1);
+  tb_body_update_mass(w, b);
+  return TB_OK;
+}
+
+bool tb_shape_is_valid(tb_shape_id id) { return tb_shape_get(id, NULL, NULL) != NULL; }
+
+tb_shape_type tb_shape_get_type(tb_shape_id id) {
+  GET_SHAPE(id, TB_SHAPE_CIRCLE);
+  return s->type;
+}
+
+tb_body_id tb_shape_get_body(tb_shape_id id) {
+  GET_SHAPE(id, ((tb_body_id){0, 0, 0}));
+  return tb_make_body_id(w, s->body);
+}
+
+float tb_shape_get_density(tb_shape_id id) {
+  GET_SHAPE(id, 0.0f);
+  return s->density;
+}
+
+tb_result tb_shape_set_density(tb_shape_id id, float density) {
+  GET_SHAPE_FOR_CHANGE(id);
+  if (check_material(w, __func__, "density", density)) return tb_last_result();
+  float old = s->density;
+  s->density = density;
+  tb_mass_data md = tb_shape_geom_mass(s);
+  if (!tb_value_ok(md.mass) || !tb_value_ok(md.rotational_inertia)) {
+    s->density = old;
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: density %g makes the mass overflow", __func__, (double)density);
+  }
+  tb_body_update_mass(w, tb_body_at(w, s->body));
+  return TB_OK;
+}
+
+float tb_shape_get_friction(tb_shape_id id) {
+  GET_SHAPE(id, 0.0f);
+  return s->friction;
+}
+
+tb_result tb_shape_set_friction(tb_shape_id id, float friction) {
+  GET_SHAPE_FOR_CHANGE(id);
+  if (check_material(w, __func__, "friction", friction)) return tb_last_result();
+  s->friction = friction;
+  return TB_OK;
+}
+
+float tb_shape_get_restitution(tb_shape_id id) {
+  GET_SHAPE(id, 0.0f);
+  return s->restitution;
+}
+
+tb_result tb_shape_set_restitution(tb_shape_id id, float restitution) {
+  GET_SHAPE_FOR_CHANGE(id);
+  if (check_material(w, __func__, "restitution", restitution)) return tb_last_result();
+  s->restitution = restitution;
+  return TB_OK;
+}
+
+void* tb_shape_get_user_data(tb_shape_id id) {
+  GET_SHAPE(id, NULL);
+  return s->user_data;
+}
+
+tb_result tb_shape_set_user_data(tb_shape_id id, void* user_data) {
+  GET_SHAPE(id, tb_last_result());
+  s->user_data = user_data;
+  return TB_OK;
+}
+
+tb_mass_data tb_shape_get_mass_data(tb_shape_id id) {
+  GET_SHAPE(id, ((tb_mass_data){0.0f, {0.0f, 0.0f}, 0.0f}));
+  return tb_shape_geom_mass(s);
+}
+
+tb_aabb tb_shape_get_aabb(tb_shape_id id) {
+  GET_SHAPE(id, ((tb_aabb){{0.0f, 0.0f}, {0.0f, 0.0f}}));
+  return tb_shape_geom_aabb(s, tb_body_at(w, s->body)->transform);
+}
+
+static tb_result get_geometry(tb_shape_id id, tb_shape_type type, void* out, const char* fn) {
+  tb_world* w = NULL;
+  tb_shape* s = tb_shape_get(id, &w, fn);
+  if (s == NULL) return tb_last_result();
+  if (out == NULL) return tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: out is NULL", fn);
+  if (s->type != type) return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the shape is of another type", fn);
+  switch (type) {
+    case TB_SHAPE_CIRCLE: *(tb_circle*)out = s->geom.circle; break;
+    case TB_SHAPE_CAPSULE: *(tb_capsule*)out = s->geom.capsule; break;
+    case TB_SHAPE_SEGMENT: *(tb_segment*)out = s->geom.segment; break;
+    case TB_SHAPE_POLYGON: *(tb_polygon*)out = s->geom.polygon; break;
+  }
+  return TB_OK;
+}
+
+tb_result tb_shape_get_circle(tb_shape_id id, tb_circle* out) { return get_geometry(id, TB_SHAPE_CIRCLE, out, __func__); }
+tb_result tb_shape_get_capsule(tb_shape_id id, tb_capsule* out) { return get_geometry(id, TB_SHAPE_CAPSULE, out, __func__); }
+tb_result tb_shape_get_segment(tb_shape_id id, tb_segment* out) { return get_geometry(id, TB_SHAPE_SEGMENT, out, __func__); }
+tb_result tb_shape_get_polygon(tb_shape_id id, tb_polygon* out) { return get_geometry(id, TB_SHAPE_POLYGON, out, __func__); }

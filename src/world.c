@@ -1,0 +1,237 @@
+/* Worlds: creation, settings, the step, and handle resolution. */
+#include "world.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "math_internal.h"
+
+/* Worlds live in a fixed table so that a world handle can be checked without
+ * touching freed memory. */
+static tb_world* worlds[TB_MAX_WORLDS];
+static uint16_t world_generations[TB_MAX_WORLDS];
+
+tb_world_def tb_default_world_def(void) {
+  return (tb_world_def){.gravity = {0.0f, -10.0f}, .integrator = TB_INTEGRATOR_SEMI_IMPLICIT_EULER};
+}
+
+static tb_result check_integrator(tb_world* w, const char* fn, tb_integrator in) {
+  if ((int)in < (int)TB_INTEGRATOR_SEMI_IMPLICIT_EULER || (int)in > (int)TB_INTEGRATOR_RK4)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: integrator %d is not a tb_integrator", fn, (int)in);
+  return TB_OK;
+}
+
+tb_world_id tb_create_world(const tb_world_def* def) {
+  const tb_world_id null_id = {0, 0};
+  if (def == NULL) {
+    tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_create_world: def is NULL");
+    return null_id;
+  }
+  if (!tb_vector_ok(def->gravity)) {
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_create_world: def->gravity (%g, %g) is not finite",
+            (double)def->gravity.x, (double)def->gravity.y);
+    return null_id;
+  }
+  if (check_integrator(NULL, "tb_create_world", def->integrator) != TB_OK) return null_id;
+  int slot = -1;
+  for (int i = 0; i < TB_MAX_WORLDS && slot < 0; ++i)
+    if (worlds[i] == NULL) slot = i;
+  if (slot < 0) {
+    tb_fail(NULL, TB_ERR_CAPACITY, "tb_create_world: all %d worlds are in use", TB_MAX_WORLDS);
+    return null_id;
+  }
+  tb_world* w = calloc(1, sizeof *w);
+  if (w == NULL) {
+    tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_create_world: no memory");
+    return null_id;
+  }
+  w->index = (uint16_t)slot;
+  w->generation = world_generations[slot];
+  w->gravity = def->gravity;
+  w->integrator = def->integrator;
+  w->force_field = def->force_field;
+  w->force_field_context = def->force_field_context;
+  w->user_data = def->user_data;
+  tb_pool_init(&w->bodies, sizeof(tb_body));
+  tb_pool_init(&w->shapes, sizeof(tb_shape));
+  worlds[slot] = w;
+  return (tb_world_id){(uint16_t)(slot + 1), w->generation};
+}
+
+tb_world* tb_world_get(tb_world_id id, const char* fn) {
+  int slot = (int)id.index1 - 1;
+  if (slot < 0 || slot >= TB_MAX_WORLDS) {
+    tb_fail(NULL, TB_ERR_STALE_HANDLE, "%s: the world handle is null or invalid", fn);
+    return NULL;
+  }
+  tb_world* w = worlds[slot];
+  if (w == NULL || w->generation != id.generation) {
+    tb_fail(NULL, TB_ERR_STALE_HANDLE, "%s: the world was destroyed", fn);
+    return NULL;
+  }
+  return w;
+}
+
+tb_world* tb_world_get_unlocked(tb_world_id id, const char* fn) {
+  tb_world* w = tb_world_get(id, fn);
+  if (w != NULL && w->locked) {
+    tb_fail(w, TB_ERR_LOCKED, "%s: the world is inside tb_world_step", fn);
+    return NULL;
+  }
+  return w;
+}
+
+/* Shared checks of body and shape handles: the world, then slot and generation.
+ * fn == NULL resolves quietly (for the *_is_valid queries). */
+static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, bool shape, tb_world** out, const char* fn,
+                     bool unlocked) {
+  const char* what = shape ? "shape" : "body";
+  if (index1 <= 0 || world0 >= TB_MAX_WORLDS || worlds[world0] == NULL) {
+    if (fn != NULL) tb_fail(NULL, TB_ERR_STALE_HANDLE, "%s: the %s handle is null, or its world was destroyed", fn, what);
+    return NULL;
+  }
+  tb_world* w = worlds[world0];
+  tb_pool* pool = shape ? &w->shapes : &w->bodies;
+  int index = index1 - 1;
+  if (!tb_pool_alive(pool, index) || pool->generations[index] != gen) {
+    if (fn != NULL) tb_fail(w, TB_ERR_STALE_HANDLE, "%s: the %s was destroyed (stale handle)", fn, what);
+    return NULL;
+  }
+  if (unlocked && w->locked) {
+    tb_fail(w, TB_ERR_LOCKED, "%s: the world is inside tb_world_step", fn);
+    return NULL;
+  }
+  if (out != NULL) *out = w;
+  return tb_pool_at(pool, index);
+}
+
+tb_body* tb_body_get(tb_body_id id, tb_world** w, const char* fn) {
+  return resolve(id.index1, id.world0, id.generation, false, w, fn, false);
+}
+tb_shape* tb_shape_get(tb_shape_id id, tb_world** w, const char* fn) {
+  return resolve(id.index1, id.world0, id.generation, true, w, fn, false);
+}
+tb_body* tb_body_get_unlocked(tb_body_id id, tb_world** w, const char* fn) {
+  return resolve(id.index1, id.world0, id.generation, false, w, fn, true);
+}
+tb_shape* tb_shape_get_unlocked(tb_shape_id id, tb_world** w, const char* fn) {
+  return resolve(id.index1, id.world0, id.generation, true, w, fn, true);
+}
+
+tb_body_id tb_make_body_id(const tb_world* w, int index) {
+  return (tb_body_id){index + 1, w->index, w->bodies.generations[index]};
+}
+tb_shape_id tb_make_shape_id(const tb_world* w, int index) {
+  return (tb_shape_id){index + 1, w->index, w->shapes.generations[index]};
+}
+
+tb_result tb_destroy_world(tb_world_id id) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_destroy_world");
+  if (w == NULL) return tb_last_result();
+  worlds[w->index] = NULL;
+  world_generations[w->index] += 1;
+  tb_pool_free(&w->bodies);
+  tb_pool_free(&w->shapes);
+  free(w);
+  return TB_OK;
+}
+
+bool tb_world_is_valid(tb_world_id id) {
+  int slot = (int)id.index1 - 1;
+  return slot >= 0 && slot < TB_MAX_WORLDS && worlds[slot] != NULL && worlds[slot]->generation == id.generation;
+}
+
+tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_step");
+  if (w == NULL) return tb_last_result();
+  if (!isfinite(time_step) || time_step <= 0.0f || time_step > 1.0f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_step: time_step = %g must be in (0, 1] seconds",
+                   (double)time_step);
+  if (substeps < 1 || substeps > 64)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_step: substeps = %d must be in 1..64", substeps);
+  w->locked = true;
+  int bad = tb_integrate_bodies(w, time_step, substeps);
+  w->locked = false;
+  w->time += time_step;
+  w->step_count += 1;
+  if (bad > 0)
+    return tb_fail(w, TB_ERR_NUMERIC,
+                   "tb_world_step: %d bodies got a non-finite state (from a force or the force field) and were "
+                   "left as they were before the step",
+                   bad);
+  return TB_OK;
+}
+
+tb_result tb_world_set_gravity(tb_world_id id, tb_vec2 gravity) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_set_gravity");
+  if (w == NULL) return tb_last_result();
+  if (!tb_vector_ok(gravity))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_set_gravity: gravity (%g, %g) is not finite",
+                   (double)gravity.x, (double)gravity.y);
+  w->gravity = gravity;
+  return TB_OK;
+}
+
+tb_vec2 tb_world_get_gravity(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_get_gravity");
+  return w != NULL ? w->gravity : (tb_vec2){0.0f, 0.0f};
+}
+
+tb_result tb_world_set_integrator(tb_world_id id, tb_integrator integrator) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_set_integrator");
+  if (w == NULL) return tb_last_result();
+  tb_result r = check_integrator(w, "tb_world_set_integrator", integrator);
+  if (r == TB_OK) w->integrator = integrator;
+  return r;
+}
+
+tb_integrator tb_world_get_integrator(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_get_integrator");
+  return w != NULL ? w->integrator : TB_INTEGRATOR_SEMI_IMPLICIT_EULER;
+}
+
+tb_result tb_world_set_force_field(tb_world_id id, tb_force_field_fn* fn, void* context) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_set_force_field");
+  if (w == NULL) return tb_last_result();
+  w->force_field = fn;
+  w->force_field_context = context;
+  return TB_OK;
+}
+
+double tb_world_get_time(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_get_time");
+  return w != NULL ? w->time : 0.0;
+}
+
+void* tb_world_get_user_data(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_get_user_data");
+  return w != NULL ? w->user_data : NULL;
+}
+
+tb_result tb_world_set_user_data(tb_world_id id, void* user_data) {
+  tb_world* w = tb_world_get(id, "tb_world_set_user_data");
+  if (w == NULL) return tb_last_result();
+  w->user_data = user_data;
+  return TB_OK;
+}
+
+tb_counts tb_world_get_counts(tb_world_id id) {
+  tb_counts c = {0, 0, 0, 0};
+  tb_world* w = tb_world_get(id, "tb_world_get_counts");
+  if (w == NULL) return c;
+  c.body_count = w->bodies.count;
+  c.shape_count = w->shapes.count;
+  c.step_count = w->step_count;
+  for (int i = 0; i < w->bodies.high; ++i) {
+    if (!tb_pool_alive(&w->bodies, i)) continue;
+    const tb_body* b = tb_body_at(w, i);
+    if (b->enabled && b->type != TB_STATIC_BODY) c.awake_body_count += 1;
+  }
+  return c;
+}
+
+const char* tb_world_last_error(tb_world_id id) {
+  int slot = (int)id.index1 - 1;
+  if (!tb_world_is_valid(id)) return "the world handle is null or the world was destroyed";
+  return worlds[slot]->last_error;
+}
