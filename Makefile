@@ -25,7 +25,7 @@ LIB_A := $(BUILD)/libtumble.a
 LIB_SO := $(BUILD)/libtumble.so
 
 # one check executable per suite; reference suites also link the Box2D shim
-UNIT_SRC := $(wildcard tests/test_*.c)
+UNIT_SRC := $(filter-out tests/test_util.c,$(wildcard tests/test_*.c))
 UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/tests/%)
 REF_SRC := $(wildcard tests/reference/test_*.c)
 REF_BIN := $(REF_SRC:tests/reference/%.c=$(BUILD)/tests/reference/%)

@@ -189,6 +189,12 @@ typedef struct tb_counts {
 
 tb_counts tb_world_get_counts(tb_world_id world);
 
+/* A 64-bit hash of the simulated state and settings: every body's placement,
+ * velocities, forces, mass and flags, every shape's geometry and material, and
+ * the world's gravity, integrator and time. Equal states give equal hashes;
+ * use it to check determinism or that a rejected call changed nothing. */
+uint64_t tb_world_hash(tb_world_id world);
+
 /* The message of the last call rejected on this world ("" when none). */
 const char* tb_world_last_error(tb_world_id world);
 

@@ -230,6 +230,77 @@ tb_counts tb_world_get_counts(tb_world_id id) {
   return c;
 }
 
+/* FNV-1a over explicitly listed fields (struct padding is never hashed). */
+typedef struct hasher {
+  uint64_t h;
+} hasher;
+
+static void hash_bytes(hasher* s, const void* data, size_t n) {
+  const unsigned char* p = data;
+  for (size_t i = 0; i < n; ++i) s->h = (s->h ^ p[i]) * 0x100000001b3ull;
+}
+static void hash_float(hasher* s, float x) { hash_bytes(s, &x, sizeof x); }
+static void hash_int(hasher* s, int x) { hash_bytes(s, &x, sizeof x); }
+static void hash_vec(hasher* s, tb_vec2 v) {
+  hash_float(s, v.x);
+  hash_float(s, v.y);
+}
+
+static void hash_shape(hasher* s, const tb_shape* sh) {
+  hash_int(s, (int)sh->type);
+  hash_int(s, sh->body);
+  hash_float(s, sh->density);
+  hash_float(s, sh->friction);
+  hash_float(s, sh->restitution);
+  switch (sh->type) {
+    case TB_SHAPE_CIRCLE: hash_vec(s, sh->geom.circle.center); hash_float(s, sh->geom.circle.radius); break;
+    case TB_SHAPE_CAPSULE:
+      hash_vec(s, sh->geom.capsule.center1);
+      hash_vec(s, sh->geom.capsule.center2);
+      hash_float(s, sh->geom.capsule.radius);
+      break;
+    case TB_SHAPE_SEGMENT: hash_vec(s, sh->geom.segment.point1); hash_vec(s, sh->geom.segment.point2); break;
+    case TB_SHAPE_POLYGON:
+      hash_int(s, sh->geom.polygon.count);
+      for (int i = 0; i < sh->geom.polygon.count; ++i) hash_vec(s, sh->geom.polygon.vertices[i]);
+      hash_float(s, sh->geom.polygon.radius);
+      break;
+  }
+}
+
+uint64_t tb_world_hash(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_hash");
+  if (w == NULL) return 0;
+  hasher s = {0xcbf29ce484222325ull};
+  hash_vec(&s, w->gravity);
+  hash_int(&s, (int)w->integrator);
+  hash_bytes(&s, &w->time, sizeof w->time);
+  hash_int(&s, w->bodies.count);
+  hash_int(&s, w->shapes.count);
+  for (int i = 0; i < w->bodies.high; ++i) {
+    if (!tb_pool_alive(&w->bodies, i)) continue;
+    const tb_body* b = tb_body_at(w, i);
+    hash_int(&s, i);
+    hash_int(&s, (int)b->type);
+    hash_vec(&s, b->center);
+    hash_float(&s, b->angle);
+    hash_vec(&s, b->transform.p);
+    hash_vec(&s, b->local_center);
+    hash_vec(&s, b->linear_velocity);
+    hash_float(&s, b->angular_velocity);
+    hash_vec(&s, b->force);
+    hash_float(&s, b->torque);
+    hash_float(&s, b->mass);
+    hash_float(&s, b->inertia);
+    hash_float(&s, b->linear_damping);
+    hash_float(&s, b->angular_damping);
+    hash_float(&s, b->gravity_scale);
+    hash_int(&s, b->fixed_rotation + 2 * b->enabled + 4 * b->mass_overridden);
+    for (int k = b->shape_list; k >= 0; k = tb_shape_at(w, k)->next) hash_shape(&s, tb_shape_at(w, k));
+  }
+  return s.h;
+}
+
 const char* tb_world_last_error(tb_world_id id) {
   int slot = (int)id.index1 - 1;
   if (!tb_world_is_valid(id)) return "the world handle is null or the world was destroyed";
