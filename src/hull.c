@@ -59,7 +59,8 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
                      (double)p.x, (double)p.y);
   }
 
-  tb_vec2* pts = malloc((size_t)count * 2 * sizeof *pts);
+  /* the points, then room for both chains (up to 2n entries) */
+  tb_vec2* pts = malloc((size_t)count * 3 * sizeof *pts);
   if (pts == NULL) return tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_make_polygon: no memory for %d points", count);
   tb_vec2* hull = pts + count;
 
