@@ -38,6 +38,9 @@ CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 
 DEMO_BIN := $(BUILD)/tumble-trajectory
 
+# keep test and shim objects between builds (they are intermediate files otherwise)
+.SECONDARY:
+
 .PHONY: all lib test tests sanitize demo install uninstall clean format format-check deps-test
 
 all: lib
