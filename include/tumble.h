@@ -119,9 +119,16 @@ typedef struct tb_shape_id {
   uint16_t generation;
 } tb_shape_id;
 
+typedef struct tb_chain_id {
+  int32_t index1;
+  uint16_t world0;
+  uint16_t generation;
+} tb_chain_id;
+
 static inline bool tb_world_id_is_null(tb_world_id id) { return id.index1 == 0; }
 static inline bool tb_body_id_is_null(tb_body_id id) { return id.index1 == 0; }
 static inline bool tb_shape_id_is_null(tb_shape_id id) { return id.index1 == 0; }
+static inline bool tb_chain_id_is_null(tb_chain_id id) { return id.index1 == 0; }
 
 /* ----------------------------------------------------------------- world -- */
 
@@ -151,11 +158,36 @@ typedef struct tb_body_state {
 typedef void tb_force_field_fn(double time, const tb_body_state* state, void* context,
                                tb_vec2* force, float* torque);
 
+/* Decides whether two shapes may collide, after the filter bits (optional). It is
+ * called when the broad phase finds a new pair; it must not change the world. */
+typedef bool tb_custom_filter_fn(tb_shape_id a, tb_shape_id b, void* context);
+
+struct tb_manifold;
+/* Called for each touching, non-sensor contact of shapes that enable pre-solve
+ * events, after the narrow phase and before the solver; return false to disable
+ * the contact for this step (e.g. one-way platforms). Must not change the world. */
+typedef bool tb_pre_solve_fn(tb_shape_id a, tb_shape_id b, const struct tb_manifold* manifold, void* context);
+
+/* Mixes two shapes' friction or restitution into the contact's. */
+typedef float tb_mix_fn(float a, float b, void* context);
+
 typedef struct tb_world_def {
-  tb_vec2 gravity;              /* m/s^2, default (0, -10) */
-  tb_integrator integrator;     /* default semi-implicit Euler */
+  tb_vec2 gravity;                /* m/s^2, default (0, -10) */
+  tb_integrator integrator;       /* default semi-implicit Euler */
   tb_force_field_fn* force_field; /* optional, default NULL */
   void* force_field_context;
+  /* Contact hit events are reported above this approach speed (m/s, default 1). */
+  float hit_event_threshold;
+  tb_custom_filter_fn* custom_filter; /* optional */
+  void* custom_filter_context;
+  tb_pre_solve_fn* pre_solve; /* optional */
+  void* pre_solve_context;
+  /* Mixing rules, fixed when a contact is created. Defaults: friction
+   * sqrt(fa fb) (a frictionless shape makes the contact frictionless),
+   * restitution max(ra, rb) (a bouncy shape bounces on anything). */
+  tb_mix_fn* friction_mix;
+  tb_mix_fn* restitution_mix;
+  void* mix_context;
   void* user_data;
 } tb_world_def;
 
@@ -185,6 +217,9 @@ typedef struct tb_counts {
   int awake_body_count; /* enabled, non-static bodies that are simulated */
   int shape_count;
   int step_count;
+  int contact_count;  /* pairs of shapes whose fat bounding boxes overlap */
+  int touching_count; /* contacts with manifold points (speculative included) */
+  int tree_height;    /* tallest of the broad phase's trees */
 } tb_counts;
 
 tb_counts tb_world_get_counts(tb_world_id world);
@@ -304,7 +339,8 @@ typedef enum tb_shape_type {
   TB_SHAPE_CIRCLE = 0,
   TB_SHAPE_CAPSULE,
   TB_SHAPE_SEGMENT,
-  TB_SHAPE_POLYGON
+  TB_SHAPE_POLYGON,
+  TB_SHAPE_CHAIN_SEGMENT /* one segment of a chain (see tb_create_chain) */
 } tb_shape_type;
 
 typedef struct tb_circle {
@@ -346,10 +382,29 @@ tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb
 /* A box with rounded corners: core half-extents hx, hy plus radius. */
 tb_result tb_make_rounded_box(float hx, float hy, float radius, tb_polygon* out);
 
+/* Which shapes collide. Shapes A and B may collide when
+ *   (A.category_bits & B.mask_bits) != 0 && (B.category_bits & A.mask_bits) != 0,
+ * except that a shared non-zero group_index overrides the bits: the same
+ * positive group always collides, the same negative group never does. */
+typedef struct tb_filter {
+  uint64_t category_bits; /* default 1 */
+  uint64_t mask_bits;     /* default all bits */
+  int32_t group_index;    /* default 0 */
+} tb_filter;
+
+tb_filter tb_default_filter(void);
+
 typedef struct tb_shape_def {
   float density;     /* kg/m^2, >= 0, default 1 */
   float friction;    /* >= 0, default 0.6 */
   float restitution; /* >= 0, default 0 */
+  tb_filter filter;
+  /* A sensor detects overlaps (sensor events) and never pushes anything. */
+  bool is_sensor;
+  bool enable_sensor_events;    /* default true: this shape is seen by sensors */
+  bool enable_contact_events;   /* default true: begin/end events */
+  bool enable_hit_events;       /* default false */
+  bool enable_pre_solve_events; /* default false */
   void* user_data;
 } tb_shape_def;
 
@@ -372,6 +427,10 @@ float tb_shape_get_friction(tb_shape_id shape);
 tb_result tb_shape_set_friction(tb_shape_id shape, float friction);
 float tb_shape_get_restitution(tb_shape_id shape);
 tb_result tb_shape_set_restitution(tb_shape_id shape, float restitution);
+tb_filter tb_shape_get_filter(tb_shape_id shape);
+/* A new filter ends the shape's current contacts; allowed pairs return next step. */
+tb_result tb_shape_set_filter(tb_shape_id shape, tb_filter filter);
+bool tb_shape_is_sensor(tb_shape_id shape);
 void* tb_shape_get_user_data(tb_shape_id shape);
 tb_result tb_shape_set_user_data(tb_shape_id shape, void* user_data);
 /* The shape's own mass properties, in body coordinates. */
@@ -388,6 +447,210 @@ tb_result tb_shape_get_polygon(tb_shape_id shape, tb_polygon* out);
 tb_mass_data tb_compute_circle_mass(const tb_circle* circle, float density);
 tb_mass_data tb_compute_capsule_mass(const tb_capsule* capsule, float density);
 tb_mass_data tb_compute_polygon_mass(const tb_polygon* polygon, float density);
+
+/* ------------------------------------------------------------- collision -- */
+
+/* Contacts are created this far before shapes touch (metres), so that the solver
+ * can stop fast bodies without sweeping ("speculative" contacts). */
+#define TB_SPECULATIVE_DISTANCE (4.0f * TB_LINEAR_SLOP)
+
+/* One contact point. Feature ids stay the same while the same pair of features
+ * (vertex/edge) touch, so the solver can warm-start from the last impulse. */
+typedef struct tb_manifold_point {
+  tb_vec2 point;    /* world point, midway between the two surfaces */
+  float separation; /* signed gap along the normal; negative when overlapping */
+  uint32_t id;      /* feature id */
+} tb_manifold_point;
+
+/* The contact of two convex shapes: 0, 1 or 2 points and a unit normal that
+ * points from shape A to shape B. Points are reported while the separation is
+ * below TB_SPECULATIVE_DISTANCE. */
+typedef struct tb_manifold {
+  tb_vec2 normal;
+  tb_manifold_point points[2];
+  int point_count;
+} tb_manifold;
+
+/* Contact manifolds of every pair of shape types, each shape placed by its
+ * transform. Swapping the arguments gives the same points with the normal
+ * reversed (each unordered pair has one function, named A first). */
+tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
+tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
+tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb);
+tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
+tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
+                                           tb_transform xfb);
+tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
+                                           tb_transform xfb);
+tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
+tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
+                                           tb_transform xfb);
+tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb);
+
+/* A convex shape as GJK sees it: up to TB_MAX_POLYGON_VERTICES points plus a
+ * radius (a circle is 1 point, a capsule or segment 2, a polygon its vertices). */
+typedef struct tb_shape_proxy {
+  tb_vec2 points[TB_MAX_POLYGON_VERTICES];
+  int count;
+  float radius;
+} tb_shape_proxy;
+
+/* ---------------------------------------------------------------- chains -- */
+
+/* A chain: a polyline (open) or polygon outline (loop) of segments for terrain
+ * and walls. Chains are one-sided: shapes collide only with the left side of
+ * each segment, walking from points[i] to points[i + 1]. So terrain listed left
+ * to right faces up, a counter-clockwise loop holds things inside it and a
+ * clockwise loop keeps them out. Each segment knows its neighbours ("ghost
+ * vertices"), so a body sliding across a joint of a flat or concave chain
+ * meets a smooth surface and never catches on the corner. */
+typedef struct tb_chain_segment {
+  tb_vec2 ghost1; /* the vertex before point1 (= point1 at the start of an open chain) */
+  tb_segment segment;
+  tb_vec2 ghost2; /* the vertex after point2 (= point2 at the end of an open chain) */
+} tb_chain_segment;
+
+typedef struct tb_chain_def {
+  const tb_vec2* points; /* body-local, at least 2 (3 for a loop) */
+  int count;
+  bool is_loop;
+  float friction;    /* default 0.6 */
+  float restitution; /* default 0 */
+  tb_filter filter;
+  bool enable_sensor_events; /* default true */
+  void* user_data;           /* given to every segment shape */
+} tb_chain_def;
+
+tb_chain_def tb_default_chain_def(void);
+
+/* Creates one TB_SHAPE_CHAIN_SEGMENT shape per segment. Errors: NULL, too few
+ * points, non-finite points, consecutive points closer than TB_LINEAR_SLOP. */
+tb_chain_id tb_create_chain(tb_body_id body, const tb_chain_def* def);
+tb_result tb_destroy_chain(tb_chain_id chain);
+bool tb_chain_is_valid(tb_chain_id chain);
+int tb_chain_get_segment_count(tb_chain_id chain);
+/* Up to capacity of the chain's segment shapes, in order; returns the number written. */
+int tb_chain_get_segments(tb_chain_id chain, tb_shape_id* out, int capacity);
+tb_result tb_shape_get_chain_segment(tb_shape_id shape, tb_chain_segment* out);
+
+/* Chain segment manifolds (A is the chain segment; nothing from behind it). */
+tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_transform xfa, const tb_circle* b,
+                                                tb_transform xfb);
+tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,
+                                                 tb_transform xfb);
+tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
+                                                 tb_transform xfb);
+
+/* --------------------------------------------------------------- queries -- */
+
+/* Which shapes a query sees: those with (shape.category_bits & mask_bits) != 0
+ * and (shape.mask_bits & category_bits) != 0. Queries never see destroyed shapes
+ * nor the shapes of disabled bodies; sensors are seen unless skip_sensors. */
+typedef struct tb_query_filter {
+  uint64_t category_bits; /* default 1 */
+  uint64_t mask_bits;     /* default all bits */
+  bool skip_sensors;      /* default false */
+} tb_query_filter;
+
+tb_query_filter tb_default_query_filter(void);
+
+/* Overlap callbacks: return false to stop the query. */
+typedef bool tb_overlap_fn(tb_shape_id shape, void* context);
+
+/* Cast callbacks get each hit (point, normal at the surface, fraction of the
+ * translation) in no particular order. Return -1 to ignore this shape, 0 to stop,
+ * the fraction to clip the cast to this hit (closest hit), 1 to go on unclipped. */
+typedef float tb_cast_fn(tb_shape_id shape, tb_vec2 point, tb_vec2 normal, float fraction, void* context);
+
+typedef struct tb_ray_result {
+  tb_shape_id shape;
+  tb_vec2 point;
+  tb_vec2 normal;
+  float fraction;
+  bool hit;
+} tb_ray_result;
+
+/* Rays go from origin to origin + translation (translation must not be zero).
+ * A ray that starts inside a shape does not hit that shape. */
+tb_result tb_world_cast_ray(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter,
+                            tb_cast_fn* fn, void* context);
+/* The closest hit; .hit is false when there is none (or on error). */
+tb_ray_result tb_world_cast_ray_closest(tb_world_id world, tb_vec2 origin, tb_vec2 translation,
+                                        tb_query_filter filter);
+/* Every hit, nearest first: writes up to capacity into out and the number of hits
+ * (which may exceed capacity) into *count. */
+tb_result tb_world_cast_ray_all(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter,
+                                tb_ray_result* out, int capacity, int* count);
+/* Shapes whose bounding box overlaps the box. */
+tb_result tb_world_overlap_aabb(tb_world_id world, tb_aabb aabb, tb_query_filter filter, tb_overlap_fn* fn,
+                                void* context);
+/* Shapes that contain the point (segments contain nothing). */
+tb_result tb_world_overlap_point(tb_world_id world, tb_vec2 point, tb_query_filter filter, tb_overlap_fn* fn,
+                                 void* context);
+/* Shapes that overlap a convex proxy placed by a transform. */
+tb_result tb_world_overlap_shape(tb_world_id world, const tb_shape_proxy* proxy, tb_transform transform,
+                                 tb_query_filter filter, tb_overlap_fn* fn, void* context);
+/* A convex proxy swept along translation: the shapes it hits, as with rays. */
+tb_result tb_world_cast_shape(tb_world_id world, const tb_shape_proxy* proxy, tb_transform transform,
+                              tb_vec2 translation, tb_query_filter filter, tb_cast_fn* fn, void* context);
+
+/* ---------------------------------------------------------------- events -- */
+
+/* Events of the last step, as arrays the game reads after tb_world_step (they
+ * stay valid until the next step or the world's destruction). No callbacks run
+ * inside the step for these. Shape handles in end events may already be stale
+ * when the end was caused by destroying the shape or its body. */
+typedef struct tb_contact_begin_event {
+  tb_shape_id shape_a, shape_b;
+  tb_manifold manifold;
+} tb_contact_begin_event;
+
+typedef struct tb_contact_end_event {
+  tb_shape_id shape_a, shape_b;
+} tb_contact_end_event;
+
+/* A contact that began with an approach speed above the world's threshold. */
+typedef struct tb_contact_hit_event {
+  tb_shape_id shape_a, shape_b;
+  tb_vec2 point;
+  tb_vec2 normal;       /* from A to B */
+  float approach_speed; /* m/s, > 0 */
+} tb_contact_hit_event;
+
+typedef struct tb_contact_events {
+  const tb_contact_begin_event* begin_events;
+  const tb_contact_end_event* end_events;
+  const tb_contact_hit_event* hit_events;
+  int begin_count, end_count, hit_count;
+} tb_contact_events;
+
+tb_contact_events tb_world_get_contact_events(tb_world_id world);
+
+typedef struct tb_sensor_event {
+  tb_shape_id sensor, visitor;
+} tb_sensor_event;
+
+typedef struct tb_sensor_events {
+  const tb_sensor_event* begin_events;
+  const tb_sensor_event* end_events;
+  int begin_count, end_count;
+} tb_sensor_events;
+
+tb_sensor_events tb_world_get_sensor_events(tb_world_id world);
+
+/* A contact as the game can inspect it. */
+typedef struct tb_contact_data {
+  tb_shape_id shape_a, shape_b;
+  tb_manifold manifold;
+  float friction, restitution; /* mixed */
+  bool touching;               /* the manifold has points */
+  bool enabled;                /* false when the pre-solve callback disabled it */
+} tb_contact_data;
+
+/* Up to capacity of the body's contacts (sensor overlaps excluded); returns the
+ * number written. tb_body_get_contact_capacity tells how many there are. */
+int tb_body_get_contact_capacity(tb_body_id body);
+int tb_body_get_contact_data(tb_body_id body, tb_contact_data* out, int capacity);
 
 /* Number of shapes on a body, and up to capacity of their handles. */
 int tb_body_get_shape_count(tb_body_id body);

@@ -143,13 +143,42 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
   b->enabled = def->enabled;
   b->user_data = def->user_data;
   b->shape_list = -1;
+  b->contact_list = -1;
   tb_body_sync_transform(b);
   tb_body_update_mass(w, b);
   return tb_make_body_id(w, index);
 }
 
+/* Shapes leave the broad phase (their contacts end) or join it again. */
+static void remove_proxies(tb_world* w, int body) {
+  tb_contacts_destroy_of_body(w, body, -1);
+  for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next)
+    tb_broad_phase_destroy_proxy(w, s);
+}
+
+static bool add_proxies(tb_world* w, int body) {
+  for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next) {
+    if (!tb_broad_phase_create_proxy(w, s)) {
+      remove_proxies(w, body);
+      return false;
+    }
+  }
+  return true;
+}
+
+void tb_body_update_proxies(tb_world* w, int body, tb_vec2 displacement) {
+  const tb_body* b = tb_body_at(w, body);
+  for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
+    tb_shape* s = tb_shape_at(w, i);
+    s->aabb = tb_shape_geom_aabb(s, b->transform);
+    tb_broad_phase_move_proxy(w, i, displacement);
+  }
+}
+
 tb_result tb_destroy_body(tb_body_id id) {
   GET_BODY_FOR_CHANGE(id);
+  remove_proxies(w, id.index1 - 1);
+  tb_chains_destroy_of_body(w, id.index1 - 1);
   for (int s = b->shape_list; s >= 0;) {
     int next = tb_shape_at(w, s)->next;
     tb_pool_release(&w->shapes, s);
@@ -176,7 +205,15 @@ tb_result tb_body_set_type(tb_body_id id, tb_body_type type) {
   tb_result r = check_type(w, __func__, type);
   if (r != TB_OK) return r;
   if (b->type == type) return TB_OK;
+  /* the shapes move to the tree of the new type; contacts are found anew */
+  if (b->enabled) remove_proxies(w, id.index1 - 1);
+  tb_body_type old = b->type;
   b->type = type;
+  if (b->enabled && !add_proxies(w, id.index1 - 1)) {
+    b->type = old;
+    (void)add_proxies(w, id.index1 - 1);
+    return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the broad phase", __func__);
+  }
   if (type == TB_STATIC_BODY) {
     b->linear_velocity = zero2;
     b->angular_velocity = 0.0f;
@@ -214,6 +251,7 @@ tb_result tb_body_set_transform(tb_body_id id, tb_vec2 position, float angle) {
   b->transform.q = tb_make_rot(angle);
   b->transform.p = position;
   b->center = tb_transform_point(b->transform, b->local_center);
+  tb_body_update_proxies(w, id.index1 - 1, (tb_vec2){0.0f, 0.0f});
   return TB_OK;
 }
 
@@ -314,8 +352,13 @@ bool tb_body_is_enabled(tb_body_id id) {
   return b->enabled;
 }
 
+/* A disabled body leaves the broad phase: no contacts, no queries, no cost. */
 tb_result tb_body_set_enabled(tb_body_id id, bool enabled) {
   GET_BODY_FOR_CHANGE(id);
+  if (b->enabled == enabled) return TB_OK;
+  if (enabled && !add_proxies(w, id.index1 - 1))
+    return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the broad phase", __func__);
+  if (!enabled) remove_proxies(w, id.index1 - 1);
   b->enabled = enabled;
   return TB_OK;
 }
@@ -500,5 +543,36 @@ int tb_body_get_shapes(tb_body_id id, tb_shape_id* out, int capacity) {
   }
   int n = 0;
   for (int s = b->shape_list; s >= 0 && n < capacity; s = tb_shape_at(w, s)->next) out[n++] = tb_make_shape_id(w, s);
+  return n;
+}
+
+static tb_contact* edge_contact(const tb_world* w, int key) { return (tb_contact*)tb_pool_at(&w->contacts, key >> 1); }
+
+int tb_body_get_contact_capacity(tb_body_id id) {
+  GET_BODY(id, 0);
+  int n = 0;
+  for (int k = b->contact_list; k >= 0; k = edge_contact(w, k)->edges[k & 1].next)
+    n += (edge_contact(w, k)->flags & TB_CONTACT_SENSOR) == 0;
+  return n;
+}
+
+int tb_body_get_contact_data(tb_body_id id, tb_contact_data* out, int capacity) {
+  GET_BODY(id, 0);
+  if (out == NULL && capacity > 0) {
+    tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: out is NULL", __func__);
+    return 0;
+  }
+  int n = 0;
+  for (int k = b->contact_list; k >= 0 && n < capacity; k = edge_contact(w, k)->edges[k & 1].next) {
+    const tb_contact* c = edge_contact(w, k);
+    if (c->flags & TB_CONTACT_SENSOR) continue;
+    out[n++] = (tb_contact_data){tb_make_shape_id(w, c->shape_a),
+                                 tb_make_shape_id(w, c->shape_b),
+                                 c->manifold,
+                                 c->friction,
+                                 c->restitution,
+                                 (c->flags & TB_CONTACT_TOUCHING) != 0,
+                                 (c->flags & TB_CONTACT_ENABLED) != 0};
+  }
   return n;
 }

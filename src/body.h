@@ -28,6 +28,8 @@ typedef struct tb_body {
 
   int shape_list; /* first shape index, -1 when none */
   int shape_count;
+  int contact_list; /* first contact edge key (contact * 2 + side), -1 when none */
+  int contact_count;
   void* user_data;
 } tb_body;
 

@@ -6,9 +6,11 @@
  * That keeps precision for shapes far from their body origin. */
 #include "geometry.h"
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 
+#include "distance.h"
 #include "math_internal.h"
 
 #define TB_PI 3.14159265358979323846
@@ -128,9 +130,46 @@ tb_mass_data tb_shape_geom_mass(const tb_shape* s) {
     case TB_SHAPE_CAPSULE: return tb_compute_capsule_mass(&s->geom.capsule, s->density);
     case TB_SHAPE_POLYGON: return tb_compute_polygon_mass(&s->geom.polygon, s->density);
     case TB_SHAPE_SEGMENT: break;
+    case TB_SHAPE_CHAIN_SEGMENT: {
+      const tb_segment* g = &s->geom.chain_segment.segment;
+      return (tb_mass_data){0.0f, tb_lerp(g->point1, g->point2, 0.5f), 0.0f};
+    }
   }
   /* a segment has no area: no mass; its midpoint keeps the centre well defined */
   return (tb_mass_data){0.0f, tb_lerp(s->geom.segment.point1, s->geom.segment.point2, 0.5f), 0.0f};
+}
+
+/* The point against the core (a point, segment or polygon) plus the radius. */
+bool tb_shape_geom_contains(const tb_shape* s, tb_transform xf, tb_vec2 point) {
+  tb_vec2 p = tb_inv_transform_point(xf, point);
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE: {
+      float r = s->geom.circle.radius;
+      return tb_distance_sq(p, s->geom.circle.center) <= r * r;
+    }
+    case TB_SHAPE_CAPSULE: {
+      const tb_capsule* c = &s->geom.capsule;
+      return tb_segment_distance(p, p, c->center1, c->center2).distance_sq <= c->radius * c->radius;
+    }
+    case TB_SHAPE_SEGMENT:
+    case TB_SHAPE_CHAIN_SEGMENT: return false;
+    case TB_SHAPE_POLYGON: break;
+  }
+  const tb_polygon* poly = &s->geom.polygon;
+  float separation = -FLT_MAX;
+  for (int i = 0; i < poly->count; ++i) {
+    float d = tb_dot(poly->normals[i], tb_sub(p, poly->vertices[i]));
+    if (d > separation) separation = d;
+  }
+  if (separation <= 0.0f) return true;
+  if (separation > poly->radius) return false;
+  /* outside the core but within the rounding: the nearest edge decides */
+  float r2 = poly->radius * poly->radius;
+  for (int i = 0; i < poly->count; ++i) {
+    tb_vec2 a = poly->vertices[i], b = poly->vertices[i + 1 < poly->count ? i + 1 : 0];
+    if (tb_segment_distance(p, p, a, b).distance_sq <= r2) return true;
+  }
+  return false;
 }
 
 static tb_aabb aabb_of_points(const tb_vec2* pts, int n, tb_transform xf, float r) {
@@ -148,6 +187,7 @@ tb_aabb tb_shape_geom_aabb(const tb_shape* s, tb_transform xf) {
     case TB_SHAPE_CIRCLE: return aabb_of_points(&s->geom.circle.center, 1, xf, s->geom.circle.radius);
     case TB_SHAPE_CAPSULE: return aabb_of_points(&s->geom.capsule.center1, 2, xf, s->geom.capsule.radius);
     case TB_SHAPE_SEGMENT: return aabb_of_points(&s->geom.segment.point1, 2, xf, 0.0f);
+    case TB_SHAPE_CHAIN_SEGMENT: return aabb_of_points(&s->geom.chain_segment.segment.point1, 2, xf, 0.0f);
     case TB_SHAPE_POLYGON:
       return aabb_of_points(s->geom.polygon.vertices, s->geom.polygon.count, xf, s->geom.polygon.radius);
   }

@@ -60,3 +60,14 @@ void tb_pool_release(tb_pool* pool, int index) {
   pool->next_free[index] = pool->free_head;
   pool->free_head = index;
 }
+
+bool tb_array_reserve(void** data, int* capacity, int need, size_t item_size) {
+  if (need <= *capacity) return true;
+  int cap = *capacity < 16 ? 16 : *capacity;
+  while (cap < need) cap *= 2;
+  void* grown = realloc(*data, (size_t)cap * item_size);
+  if (grown == NULL) return false;
+  *data = grown;
+  *capacity = cap;
+  return true;
+}

@@ -30,4 +30,8 @@ static inline void* tb_pool_at(const tb_pool* pool, int index) {
   return (char*)pool->items + (size_t)index * pool->item_size;
 }
 
+/* Grows *data (of *capacity items of item_size) to hold at least `need` items,
+ * doubling. false when out of memory (then nothing changed). */
+bool tb_array_reserve(void** data, int* capacity, int need, size_t item_size);
+
 #endif

@@ -17,8 +17,15 @@
   tb_shape* s = tb_shape_get_unlocked((id), &w, __func__); \
   if (s == NULL) return tb_last_result()
 
+tb_filter tb_default_filter(void) { return (tb_filter){1u, UINT64_MAX, 0}; }
+
 tb_shape_def tb_default_shape_def(void) {
-  return (tb_shape_def){.density = 1.0f, .friction = 0.6f, .restitution = 0.0f};
+  return (tb_shape_def){.density = 1.0f,
+                        .friction = 0.6f,
+                        .restitution = 0.0f,
+                        .filter = tb_default_filter(),
+                        .enable_sensor_events = true,
+                        .enable_contact_events = true};
 }
 
 static tb_result check_material(tb_world* w, const char* fn, const char* name, float x) {
@@ -41,13 +48,25 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
       check_material(w, fn, "def->restitution", def->restitution))
     return null_id;
   const char* problem = NULL;
-  tb_shape proto = {.type = type, .density = def->density, .friction = def->friction,
-                    .restitution = def->restitution, .user_data = def->user_data};
+  tb_shape proto = {.type = type,
+                    .density = def->density,
+                    .friction = def->friction,
+                    .restitution = def->restitution,
+                    .filter = def->filter,
+                    .sensor = def->is_sensor,
+                    .enable_sensor_events = def->enable_sensor_events,
+                    .enable_contact_events = def->enable_contact_events,
+                    .enable_hit_events = def->enable_hit_events,
+                    .enable_pre_solve_events = def->enable_pre_solve_events,
+                    .proxy = -1,
+                    .chain = -1,
+                    .user_data = def->user_data};
   switch (type) {
     case TB_SHAPE_CIRCLE: proto.geom.circle = *(const tb_circle*)geom; problem = tb_check_circle(geom); break;
     case TB_SHAPE_CAPSULE: proto.geom.capsule = *(const tb_capsule*)geom; problem = tb_check_capsule(geom); break;
     case TB_SHAPE_SEGMENT: proto.geom.segment = *(const tb_segment*)geom; problem = tb_check_segment(geom); break;
     case TB_SHAPE_POLYGON: proto.geom.polygon = *(const tb_polygon*)geom; problem = tb_check_polygon(geom); break;
+    case TB_SHAPE_CHAIN_SEGMENT: problem = "chain segments are made by tb_create_chain"; break;
   }
   if (problem != NULL) {
     tb_fail(w, type == TB_SHAPE_POLYGON ? TB_ERR_DEGENERATE_POLYGON : TB_ERR_INVALID_ARGUMENT, "%s: %s", fn, problem);
@@ -59,23 +78,46 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
             (double)def->density);
     return null_id;
   }
-  int body_index = body_id.index1 - 1;
+  int index = tb_shape_attach(w, body_id.index1 - 1, &proto, fn);
+  if (index < 0) return null_id;
+  tb_body_update_mass(w, tb_body_at(w, body_id.index1 - 1));
+  return tb_make_shape_id(w, index);
+}
+
+int tb_shape_attach(tb_world* w, int body_index, const tb_shape* proto, const char* fn) {
   int index = tb_pool_alloc(&w->shapes);
   if (index < 0) {
     tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for another shape", fn);
-    return null_id;
+    return -1;
   }
-  b = tb_body_at(w, body_index); /* the pools are separate, but stay safe */
+  tb_body* b = tb_body_at(w, body_index);
   tb_shape* s = tb_shape_at(w, index);
-  *s = proto;
+  *s = *proto;
   s->body = body_index;
+  s->proxy = -1;
   s->prev = -1;
   s->next = b->shape_list;
   if (b->shape_list >= 0) tb_shape_at(w, b->shape_list)->prev = index;
   b->shape_list = index;
   b->shape_count += 1;
-  tb_body_update_mass(w, b);
-  return tb_make_shape_id(w, index);
+  if (b->enabled && !tb_broad_phase_create_proxy(w, index)) {
+    tb_shape_detach(w, index);
+    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the shape's broad-phase proxy", fn);
+    return -1;
+  }
+  return index;
+}
+
+void tb_shape_detach(tb_world* w, int index) {
+  tb_shape* s = tb_shape_at(w, index);
+  tb_body* b = tb_body_at(w, s->body);
+  tb_contacts_destroy_of_body(w, s->body, index);
+  tb_broad_phase_destroy_proxy(w, index);
+  if (s->prev >= 0) tb_shape_at(w, s->prev)->next = s->next;
+  else b->shape_list = s->next;
+  if (s->next >= 0) tb_shape_at(w, s->next)->prev = s->prev;
+  b->shape_count -= 1;
+  tb_pool_release(&w->shapes, index);
 }
 
 tb_shape_id tb_create_circle_shape(tb_body_id body, const tb_shape_def* def, const tb_circle* circle) {
@@ -93,13 +135,11 @@ tb_shape_id tb_create_polygon_shape(tb_body_id body, const tb_shape_def* def, co
 
 tb_result tb_destroy_shape(tb_shape_id id) {
   GET_SHAPE_FOR_CHANGE(id);
-  tb_body* b = tb_body_at(w, s->body);
-  if (s->prev >= 0) tb_shape_at(w, s->prev)->next = s->next;
-  else b->shape_list = s->next;
-  if (s->next >= 0) tb_shape_at(w, s->next)->prev = s->prev;
-  b->shape_count -= 1;
-  tb_pool_release(&w->shapes, id.index1 - 1);
-  tb_body_update_mass(w, b);
+  if (s->chain >= 0)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the shape is a segment of a chain: destroy the chain", __func__);
+  int body = s->body;
+  tb_shape_detach(w, id.index1 - 1);
+  tb_body_update_mass(w, tb_body_at(w, body));
   return TB_OK;
 }
 
@@ -158,6 +198,31 @@ tb_result tb_shape_set_restitution(tb_shape_id id, float restitution) {
   return TB_OK;
 }
 
+tb_filter tb_shape_get_filter(tb_shape_id id) {
+  GET_SHAPE(id, ((tb_filter){0, 0, 0}));
+  return s->filter;
+}
+
+/* A new filter drops the shape's contacts; the broad phase finds the pairs the
+ * filter now allows at the next step. */
+tb_result tb_shape_set_filter(tb_shape_id id, tb_filter filter) {
+  GET_SHAPE_FOR_CHANGE(id);
+  int index = id.index1 - 1;
+  tb_contacts_destroy_of_body(w, s->body, index);
+  s->filter = filter;
+  if (s->proxy >= 0) {
+    tb_broad_phase_destroy_proxy(w, index);
+    if (!tb_broad_phase_create_proxy(w, index))
+      return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory to re-insert the shape", __func__);
+  }
+  return TB_OK;
+}
+
+bool tb_shape_is_sensor(tb_shape_id id) {
+  GET_SHAPE(id, false);
+  return s->sensor;
+}
+
 void* tb_shape_get_user_data(tb_shape_id id) {
   GET_SHAPE(id, NULL);
   return s->user_data;
@@ -190,6 +255,7 @@ static tb_result get_geometry(tb_shape_id id, tb_shape_type type, void* out, con
     case TB_SHAPE_CAPSULE: *(tb_capsule*)out = s->geom.capsule; break;
     case TB_SHAPE_SEGMENT: *(tb_segment*)out = s->geom.segment; break;
     case TB_SHAPE_POLYGON: *(tb_polygon*)out = s->geom.polygon; break;
+    case TB_SHAPE_CHAIN_SEGMENT: *(tb_chain_segment*)out = s->geom.chain_segment; break;
   }
   return TB_OK;
 }
@@ -198,3 +264,6 @@ tb_result tb_shape_get_circle(tb_shape_id id, tb_circle* out) { return get_geome
 tb_result tb_shape_get_capsule(tb_shape_id id, tb_capsule* out) { return get_geometry(id, TB_SHAPE_CAPSULE, out, __func__); }
 tb_result tb_shape_get_segment(tb_shape_id id, tb_segment* out) { return get_geometry(id, TB_SHAPE_SEGMENT, out, __func__); }
 tb_result tb_shape_get_polygon(tb_shape_id id, tb_polygon* out) { return get_geometry(id, TB_SHAPE_POLYGON, out, __func__); }
+tb_result tb_shape_get_chain_segment(tb_shape_id id, tb_chain_segment* out) {
+  return get_geometry(id, TB_SHAPE_CHAIN_SEGMENT, out, __func__);
+}

@@ -11,11 +11,28 @@ typedef struct tb_shape {
     tb_capsule capsule;
     tb_segment segment;
     tb_polygon polygon;
+    tb_chain_segment chain_segment;
   } geom;
   int body;       /* owning body's slot */
   int prev, next; /* the body's shape list, -1 at the ends */
   float density, friction, restitution;
+  tb_filter filter;
+  bool sensor;
+  bool enable_sensor_events, enable_contact_events, enable_hit_events, enable_pre_solve_events;
+  /* broad phase */
+  int proxy;        /* leaf in the tree of its body type, -1 when not in a tree */
+  int tree;         /* which tree: the body type when the proxy was made */
+  bool in_move_buffer;
+  tb_aabb aabb;     /* tight, at the body's current transform */
+  int chain;        /* the chain this segment belongs to, -1 for other shapes */
   void* user_data;
 } tb_shape;
+
+struct tb_world;
+/* Links a filled-in shape to a body and the broad phase (mass not updated).
+ * Returns its index, or -1 (error recorded, nothing changed). */
+int tb_shape_attach(struct tb_world* w, int body, const tb_shape* proto, const char* fn);
+/* Unlinks and frees a shape: its contacts end, its proxy goes (mass not updated). */
+void tb_shape_detach(struct tb_world* w, int shape);
 
 #endif

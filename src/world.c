@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "chain.h"
 #include "math_internal.h"
 
 /* Worlds live in a fixed table so that a world handle can be checked without
@@ -12,7 +13,8 @@ static tb_world* worlds[TB_MAX_WORLDS];
 static uint16_t world_generations[TB_MAX_WORLDS];
 
 tb_world_def tb_default_world_def(void) {
-  return (tb_world_def){.gravity = {0.0f, -10.0f}, .integrator = TB_INTEGRATOR_SEMI_IMPLICIT_EULER};
+  return (tb_world_def){
+      .gravity = {0.0f, -10.0f}, .integrator = TB_INTEGRATOR_SEMI_IMPLICIT_EULER, .hit_event_threshold = 1.0f};
 }
 
 static tb_result check_integrator(tb_world* w, const char* fn, tb_integrator in) {
@@ -33,6 +35,11 @@ tb_world_id tb_create_world(const tb_world_def* def) {
     return null_id;
   }
   if (check_integrator(NULL, "tb_create_world", def->integrator) != TB_OK) return null_id;
+  if (!tb_value_ok(def->hit_event_threshold) || def->hit_event_threshold < 0.0f) {
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_create_world: def->hit_event_threshold = %g must be >= 0 and finite",
+            (double)def->hit_event_threshold);
+    return null_id;
+  }
   int slot = -1;
   for (int i = 0; i < TB_MAX_WORLDS && slot < 0; ++i)
     if (worlds[i] == NULL) slot = i;
@@ -52,8 +59,23 @@ tb_world_id tb_create_world(const tb_world_def* def) {
   w->force_field = def->force_field;
   w->force_field_context = def->force_field_context;
   w->user_data = def->user_data;
+  w->hit_event_threshold = def->hit_event_threshold;
+  w->custom_filter = def->custom_filter;
+  w->custom_filter_context = def->custom_filter_context;
+  w->pre_solve = def->pre_solve;
+  w->pre_solve_context = def->pre_solve_context;
+  w->friction_mix = def->friction_mix;
+  w->restitution_mix = def->restitution_mix;
+  w->mix_context = def->mix_context;
   tb_pool_init(&w->bodies, sizeof(tb_body));
   tb_pool_init(&w->shapes, sizeof(tb_shape));
+  tb_pool_init(&w->contacts, sizeof(tb_contact));
+  tb_pool_init(&w->chains, sizeof(tb_chain));
+  if (tb_broad_phase_init(&w->broad_phase) != TB_OK) {
+    free(w);
+    tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_create_world: no memory");
+    return null_id;
+  }
   worlds[slot] = w;
   return (tb_world_id){(uint16_t)(slot + 1), w->generation};
 }
@@ -83,15 +105,17 @@ tb_world* tb_world_get_unlocked(tb_world_id id, const char* fn) {
 
 /* Shared checks of body and shape handles: the world, then slot and generation.
  * fn == NULL resolves quietly (for the *_is_valid queries). */
-static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, bool shape, tb_world** out, const char* fn,
-                     bool unlocked) {
-  const char* what = shape ? "shape" : "body";
+typedef enum handle_kind { BODY, SHAPE, CHAIN } handle_kind;
+
+static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, handle_kind kind, tb_world** out,
+                     const char* fn, bool unlocked) {
+  const char* what = kind == SHAPE ? "shape" : kind == CHAIN ? "chain" : "body";
   if (index1 <= 0 || world0 >= TB_MAX_WORLDS || worlds[world0] == NULL) {
     if (fn != NULL) tb_fail(NULL, TB_ERR_STALE_HANDLE, "%s: the %s handle is null, or its world was destroyed", fn, what);
     return NULL;
   }
   tb_world* w = worlds[world0];
-  tb_pool* pool = shape ? &w->shapes : &w->bodies;
+  tb_pool* pool = kind == SHAPE ? &w->shapes : kind == CHAIN ? &w->chains : &w->bodies;
   int index = index1 - 1;
   if (!tb_pool_alive(pool, index) || pool->generations[index] != gen) {
     if (fn != NULL) tb_fail(w, TB_ERR_STALE_HANDLE, "%s: the %s was destroyed (stale handle)", fn, what);
@@ -106,16 +130,19 @@ static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, bool shape, 
 }
 
 tb_body* tb_body_get(tb_body_id id, tb_world** w, const char* fn) {
-  return resolve(id.index1, id.world0, id.generation, false, w, fn, false);
+  return resolve(id.index1, id.world0, id.generation, BODY, w, fn, false);
 }
 tb_shape* tb_shape_get(tb_shape_id id, tb_world** w, const char* fn) {
-  return resolve(id.index1, id.world0, id.generation, true, w, fn, false);
+  return resolve(id.index1, id.world0, id.generation, SHAPE, w, fn, false);
+}
+struct tb_chain* tb_chain_get(tb_chain_id id, tb_world** w, const char* fn) {
+  return resolve(id.index1, id.world0, id.generation, CHAIN, w, fn, false);
 }
 tb_body* tb_body_get_unlocked(tb_body_id id, tb_world** w, const char* fn) {
-  return resolve(id.index1, id.world0, id.generation, false, w, fn, true);
+  return resolve(id.index1, id.world0, id.generation, BODY, w, fn, true);
 }
 tb_shape* tb_shape_get_unlocked(tb_shape_id id, tb_world** w, const char* fn) {
-  return resolve(id.index1, id.world0, id.generation, true, w, fn, true);
+  return resolve(id.index1, id.world0, id.generation, SHAPE, w, fn, true);
 }
 
 tb_body_id tb_make_body_id(const tb_world* w, int index) {
@@ -132,6 +159,14 @@ tb_result tb_destroy_world(tb_world_id id) {
   world_generations[w->index] += 1;
   tb_pool_free(&w->bodies);
   tb_pool_free(&w->shapes);
+  tb_pool_free(&w->contacts);
+  tb_chains_free(w);
+  tb_broad_phase_free(&w->broad_phase);
+  free(w->begin_events);
+  free(w->end_events);
+  free(w->hit_events);
+  free(w->sensor_begin_events);
+  free(w->sensor_end_events);
   free(w);
   return TB_OK;
 }
@@ -150,7 +185,17 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   if (substeps < 1 || substeps > 64)
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_step: substeps = %d must be in 1..64", substeps);
   w->locked = true;
+  w->begin_count = w->end_count = w->hit_count = 0;
+  w->sensor_begin_count = w->sensor_end_count = 0;
+  tb_broad_phase_update_pairs(w); /* pairs of the proxies that moved last step */
+  tb_contacts_update(w);          /* manifolds at the start of the step; events */
   int bad = tb_integrate_bodies(w, time_step, substeps);
+  for (int i = 0; i < w->bodies.high; ++i) { /* shapes follow the bodies that moved */
+    if (!tb_pool_alive(&w->bodies, i)) continue;
+    const tb_body* b = tb_body_at(w, i);
+    if (b->type == TB_STATIC_BODY || !b->enabled) continue;
+    tb_body_update_proxies(w, i, tb_scale(time_step, b->linear_velocity));
+  }
   w->locked = false;
   w->time += time_step;
   w->step_count += 1;
@@ -216,7 +261,7 @@ tb_result tb_world_set_user_data(tb_world_id id, void* user_data) {
 }
 
 tb_counts tb_world_get_counts(tb_world_id id) {
-  tb_counts c = {0, 0, 0, 0};
+  tb_counts c = {0};
   tb_world* w = tb_world_get(id, "tb_world_get_counts");
   if (w == NULL) return c;
   c.body_count = w->bodies.count;
@@ -227,7 +272,39 @@ tb_counts tb_world_get_counts(tb_world_id id) {
     const tb_body* b = tb_body_at(w, i);
     if (b->enabled && b->type != TB_STATIC_BODY) c.awake_body_count += 1;
   }
+  c.contact_count = w->contacts.count;
+  for (int i = 0; i < w->contacts.high; ++i)
+    if (tb_pool_alive(&w->contacts, i) && (((tb_contact*)tb_pool_at(&w->contacts, i))->flags & TB_CONTACT_TOUCHING))
+      c.touching_count += 1;
+  for (int t = 0; t < 3; ++t) {
+    int h = tb_tree_get_height(&w->broad_phase.trees[t]);
+    if (h > c.tree_height) c.tree_height = h;
+  }
   return c;
+}
+
+tb_contact_events tb_world_get_contact_events(tb_world_id id) {
+  tb_contact_events e = {0};
+  tb_world* w = tb_world_get(id, "tb_world_get_contact_events");
+  if (w == NULL) return e;
+  e.begin_events = w->begin_events;
+  e.end_events = w->end_events;
+  e.hit_events = w->hit_events;
+  e.begin_count = w->begin_count;
+  e.end_count = w->end_count;
+  e.hit_count = w->hit_count;
+  return e;
+}
+
+tb_sensor_events tb_world_get_sensor_events(tb_world_id id) {
+  tb_sensor_events e = {0};
+  tb_world* w = tb_world_get(id, "tb_world_get_sensor_events");
+  if (w == NULL) return e;
+  e.begin_events = w->sensor_begin_events;
+  e.end_events = w->sensor_end_events;
+  e.begin_count = w->sensor_begin_count;
+  e.end_count = w->sensor_end_count;
+  return e;
 }
 
 /* FNV-1a over explicitly listed fields (struct padding is never hashed). */
@@ -252,6 +329,10 @@ static void hash_shape(hasher* s, const tb_shape* sh) {
   hash_float(s, sh->density);
   hash_float(s, sh->friction);
   hash_float(s, sh->restitution);
+  hash_bytes(s, &sh->filter.category_bits, sizeof sh->filter.category_bits);
+  hash_bytes(s, &sh->filter.mask_bits, sizeof sh->filter.mask_bits);
+  hash_int(s, sh->filter.group_index);
+  hash_int(s, sh->sensor);
   switch (sh->type) {
     case TB_SHAPE_CIRCLE: hash_vec(s, sh->geom.circle.center); hash_float(s, sh->geom.circle.radius); break;
     case TB_SHAPE_CAPSULE:
@@ -260,6 +341,12 @@ static void hash_shape(hasher* s, const tb_shape* sh) {
       hash_float(s, sh->geom.capsule.radius);
       break;
     case TB_SHAPE_SEGMENT: hash_vec(s, sh->geom.segment.point1); hash_vec(s, sh->geom.segment.point2); break;
+    case TB_SHAPE_CHAIN_SEGMENT:
+      hash_vec(s, sh->geom.chain_segment.ghost1);
+      hash_vec(s, sh->geom.chain_segment.segment.point1);
+      hash_vec(s, sh->geom.chain_segment.segment.point2);
+      hash_vec(s, sh->geom.chain_segment.ghost2);
+      break;
     case TB_SHAPE_POLYGON:
       hash_int(s, sh->geom.polygon.count);
       for (int i = 0; i < sh->geom.polygon.count; ++i) hash_vec(s, sh->geom.polygon.vertices[i]);

@@ -1,0 +1,223 @@
+/* Broad phase: trees per body type, the move buffer and the pair set. */
+#include "broad_phase.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "geometry.h"
+#include "world.h"
+
+tb_result tb_broad_phase_init(tb_broad_phase* bp) {
+  memset(bp, 0, sizeof *bp);
+  for (int i = 0; i < 3; ++i) {
+    tb_result r = tb_tree_create(&bp->trees[i], TB_AABB_MARGIN);
+    if (r != TB_OK) return r;
+  }
+  return TB_OK;
+}
+
+void tb_broad_phase_free(tb_broad_phase* bp) {
+  for (int i = 0; i < 3; ++i) tb_tree_destroy(&bp->trees[i]);
+  free(bp->move_buffer);
+  free(bp->pair_keys);
+  free(bp->pair_contacts);
+  memset(bp, 0, sizeof *bp);
+}
+
+bool tb_filters_collide(tb_filter a, tb_filter b) {
+  if (a.group_index == b.group_index && a.group_index != 0) return a.group_index > 0;
+  return (a.category_bits & b.mask_bits) != 0 && (b.category_bits & a.mask_bits) != 0;
+}
+
+/* ---- pair set: open addressing with linear probing ---------------------- */
+
+static uint64_t pair_key(int a, int b) {
+  uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
+  return ((uint64_t)lo << 32 | hi) + 1; /* + 1 keeps 0 free as the empty mark */
+}
+
+static uint32_t pair_hash(uint64_t key) {
+  key ^= key >> 33; /* a 64-bit finaliser (murmur3's) */
+  key *= 0xff51afd7ed558ccdull;
+  key ^= key >> 33;
+  return (uint32_t)key;
+}
+
+static const uint64_t DELETED = UINT64_MAX;
+
+int tb_pair_find(const tb_broad_phase* bp, int a, int b) {
+  if (bp->pair_capacity == 0) return -1;
+  uint64_t key = pair_key(a, b);
+  uint32_t mask = (uint32_t)bp->pair_capacity - 1;
+  for (uint32_t i = pair_hash(key) & mask;; i = (i + 1) & mask) {
+    if (bp->pair_keys[i] == key) return bp->pair_contacts[i];
+    if (bp->pair_keys[i] == 0) return -1;
+  }
+}
+
+static bool pair_rehash(tb_broad_phase* bp, int capacity) {
+  uint64_t* keys = calloc((size_t)capacity, sizeof *keys);
+  int32_t* contacts = malloc((size_t)capacity * sizeof *contacts);
+  if (keys == NULL || contacts == NULL) {
+    free(keys);
+    free(contacts);
+    return false;
+  }
+  uint32_t mask = (uint32_t)capacity - 1;
+  for (int i = 0; i < bp->pair_capacity; ++i) {
+    uint64_t key = bp->pair_keys[i];
+    if (key == 0 || key == DELETED) continue;
+    uint32_t j = pair_hash(key) & mask;
+    while (keys[j] != 0) j = (j + 1) & mask;
+    keys[j] = key;
+    contacts[j] = bp->pair_contacts[i];
+  }
+  free(bp->pair_keys);
+  free(bp->pair_contacts);
+  bp->pair_keys = keys;
+  bp->pair_contacts = contacts;
+  bp->pair_capacity = capacity;
+  bp->pair_used = bp->pair_count;
+  return true;
+}
+
+bool tb_pair_add(tb_broad_phase* bp, int a, int b, int contact) {
+  /* keep the load (live + deleted slots) under 1/2 */
+  if (2 * (bp->pair_used + 1) > bp->pair_capacity) {
+    int cap = bp->pair_capacity < 64 ? 64 : bp->pair_capacity;
+    if (4 * (bp->pair_count + 1) > cap) cap *= 2; /* else only clear deleted slots */
+    if (!pair_rehash(bp, cap)) return false;
+  }
+  uint64_t key = pair_key(a, b);
+  uint32_t mask = (uint32_t)bp->pair_capacity - 1;
+  uint32_t i = pair_hash(key) & mask;
+  while (bp->pair_keys[i] != 0 && bp->pair_keys[i] != DELETED) i = (i + 1) & mask;
+  if (bp->pair_keys[i] == 0) bp->pair_used += 1;
+  bp->pair_keys[i] = key;
+  bp->pair_contacts[i] = contact;
+  bp->pair_count += 1;
+  return true;
+}
+
+void tb_pair_remove(tb_broad_phase* bp, int a, int b) {
+  if (bp->pair_capacity == 0) return;
+  uint64_t key = pair_key(a, b);
+  uint32_t mask = (uint32_t)bp->pair_capacity - 1;
+  for (uint32_t i = pair_hash(key) & mask; bp->pair_keys[i] != 0; i = (i + 1) & mask) {
+    if (bp->pair_keys[i] == key) {
+      bp->pair_keys[i] = DELETED;
+      bp->pair_count -= 1;
+      return;
+    }
+  }
+}
+
+/* ---- proxies ------------------------------------------------------------- */
+
+static bool queue_move(tb_world* w, int shape_index) {
+  tb_shape* s = tb_shape_at(w, shape_index);
+  if (s->in_move_buffer) return true;
+  tb_broad_phase* bp = &w->broad_phase;
+  if (!tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + 1, sizeof(int)))
+    return false;
+  bp->move_buffer[bp->move_count++] = shape_index;
+  s->in_move_buffer = true;
+  return true;
+}
+
+bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
+  tb_shape* s = tb_shape_at(w, shape_index);
+  const tb_body* b = tb_body_at(w, s->body);
+  s->aabb = tb_shape_geom_aabb(s, b->transform);
+  s->tree = (int)b->type;
+  s->proxy = tb_tree_create_proxy(&w->broad_phase.trees[s->tree], s->aabb, s->filter.category_bits, shape_index);
+  if (s->proxy == TB_TREE_NULL) return false;
+  if (!queue_move(w, shape_index)) {
+    tb_broad_phase_destroy_proxy(w, shape_index);
+    return false;
+  }
+  return true;
+}
+
+void tb_broad_phase_destroy_proxy(tb_world* w, int shape_index) {
+  tb_shape* s = tb_shape_at(w, shape_index);
+  if (s->proxy < 0) return;
+  tb_broad_phase* bp = &w->broad_phase;
+  if (s->in_move_buffer) {
+    for (int i = 0; i < bp->move_count; ++i)
+      if (bp->move_buffer[i] == shape_index) bp->move_buffer[i] = -1;
+    s->in_move_buffer = false;
+  }
+  tb_tree_destroy_proxy(&bp->trees[s->tree], s->proxy);
+  s->proxy = -1;
+}
+
+void tb_broad_phase_move_proxy(tb_world* w, int shape_index, tb_vec2 displacement) {
+  tb_shape* s = tb_shape_at(w, shape_index);
+  if (s->proxy < 0) return;
+  if (tb_tree_move_proxy(&w->broad_phase.trees[s->tree], s->proxy, s->aabb, displacement)) {
+    /* out of memory here only delays pair finding to the proxy's next move */
+    (void)queue_move(w, shape_index);
+  }
+}
+
+/* ---- pair finding -------------------------------------------------------- */
+
+typedef struct pair_query {
+  tb_world* w;
+  int shape;
+} pair_query;
+
+/* Whether two shapes may have a contact, before any contact exists. */
+static bool should_pair(tb_world* w, int ia, int ib) {
+  const tb_shape* a = tb_shape_at(w, ia);
+  const tb_shape* b = tb_shape_at(w, ib);
+  if (a->body == b->body) return false;
+  if (!tb_shape_types_collide(a->type, b->type)) return false;
+  if (a->sensor && b->sensor) return false;
+  if ((a->sensor && !b->enable_sensor_events) || (b->sensor && !a->enable_sensor_events)) return false;
+  if (!tb_filters_collide(a->filter, b->filter)) return false;
+  const tb_body* ba = tb_body_at(w, a->body);
+  const tb_body* bb = tb_body_at(w, b->body);
+  if (ba->type != TB_DYNAMIC_BODY && bb->type != TB_DYNAMIC_BODY) return false;
+  if (w->custom_filter != NULL &&
+      !w->custom_filter(tb_make_shape_id(w, ia), tb_make_shape_id(w, ib), w->custom_filter_context))
+    return false;
+  return true;
+}
+
+static bool pair_callback(int32_t proxy, int32_t other, void* context) {
+  (void)proxy;
+  pair_query* q = context;
+  tb_world* w = q->w;
+  if (other == q->shape) return true;
+  /* both moved and in the same tree: the pair is found from both sides; take
+   * it once, from the higher index, so the order of creation is fixed */
+  const tb_shape* o = tb_shape_at(w, other);
+  if (o->in_move_buffer && o->tree == tb_shape_at(w, q->shape)->tree && other > q->shape) return true;
+  if (tb_pair_find(&w->broad_phase, q->shape, other) >= 0) return true;
+  if (!should_pair(w, q->shape, other)) return true;
+  (void)tb_contact_create(w, q->shape, other); /* out of memory: retried when it moves again */
+  return true;
+}
+
+void tb_broad_phase_update_pairs(tb_world* w) {
+  tb_broad_phase* bp = &w->broad_phase;
+  for (int i = 0; i < bp->move_count; ++i) {
+    int shape_index = bp->move_buffer[i];
+    if (shape_index < 0) continue;
+    const tb_shape* s = tb_shape_at(w, shape_index);
+    tb_aabb fat = tb_tree_get_fat_aabb(&bp->trees[s->tree], s->proxy);
+    pair_query q = {w, shape_index};
+    /* A dynamic proxy looks everywhere; others only among dynamic proxies. All
+     * category bits: a shared positive group collides whatever the bits say. */
+    tb_tree_query(&bp->trees[TB_DYNAMIC_BODY], fat, UINT64_MAX, pair_callback, &q);
+    if (s->tree == TB_DYNAMIC_BODY) {
+      tb_tree_query(&bp->trees[TB_KINEMATIC_BODY], fat, UINT64_MAX, pair_callback, &q);
+      tb_tree_query(&bp->trees[TB_STATIC_BODY], fat, UINT64_MAX, pair_callback, &q);
+    }
+  }
+  for (int i = 0; i < bp->move_count; ++i)
+    if (bp->move_buffer[i] >= 0) tb_shape_at(w, bp->move_buffer[i])->in_move_buffer = false;
+  bp->move_count = 0;
+}

@@ -1,0 +1,44 @@
+/* Broad phase: one AABB tree per body type (static, kinematic, dynamic) so the
+ * static world is only ever walked on behalf of something that moved; a move
+ * buffer of proxies re-inserted since the last pair update; and the set of
+ * existing pairs. */
+#ifndef TB_BROAD_PHASE_H
+#define TB_BROAD_PHASE_H
+
+#include <stdint.h>
+
+#include "tree.h"
+
+/* Fat AABB margin: a proxy moving less than this is not re-inserted. */
+#define TB_AABB_MARGIN 0.1f
+
+typedef struct tb_broad_phase {
+  tb_tree trees[3]; /* indexed by tb_body_type */
+  int* move_buffer; /* shape indices; -1 for a proxy destroyed since */
+  int move_count, move_capacity;
+  /* open-addressing hash set of pairs: key (low shape << 32 | high shape) */
+  uint64_t* pair_keys; /* 0 = empty slot, UINT64_MAX = deleted */
+  int32_t* pair_contacts;
+  int pair_capacity, pair_count, pair_used;
+} tb_broad_phase;
+
+struct tb_world;
+
+tb_result tb_broad_phase_init(tb_broad_phase* bp);
+void tb_broad_phase_free(tb_broad_phase* bp);
+/* Proxies follow their shapes: create (and queue for pair finding), destroy,
+ * and move (queued again only when re-inserted). false when out of memory. */
+bool tb_broad_phase_create_proxy(struct tb_world* w, int shape);
+void tb_broad_phase_destroy_proxy(struct tb_world* w, int shape);
+void tb_broad_phase_move_proxy(struct tb_world* w, int shape, tb_vec2 displacement);
+/* New contacts for the pairs of the queued proxies; clears the queue. */
+void tb_broad_phase_update_pairs(struct tb_world* w);
+
+int tb_pair_find(const tb_broad_phase* bp, int shape_a, int shape_b);
+bool tb_pair_add(tb_broad_phase* bp, int shape_a, int shape_b, int contact);
+void tb_pair_remove(tb_broad_phase* bp, int shape_a, int shape_b);
+
+/* Filter bits and groups (see tb_filter in tumble.h). */
+bool tb_filters_collide(tb_filter a, tb_filter b);
+
+#endif

@@ -1,0 +1,197 @@
+/* Chains: creation as one-sided segment shapes with ghost vertices, and the
+ * manifolds of a chain segment.
+ *
+ * A chain segment collides like a plain segment, then the result is filtered:
+ * - one-sided: nothing whose centre lies behind the segment (its right side),
+ *   and no normal pointing behind it;
+ * - ghost vertices: a contact whose normal is not the segment's face normal
+ *   comes from a segment end (a vertex region). At a flat or concave joint
+ *   that region belongs to the neighbour's face, so the contact is dropped (a
+ *   box sliding over the joint never meets a tilted normal and does not catch);
+ *   at a convex joint the region is shared, and the segment whose face normal
+ *   is closer to the contact normal keeps it, so exactly one reports it. */
+#include "chain.h"
+
+#include <stdlib.h>
+
+#include "math_internal.h"
+#include "world.h"
+
+tb_chain_def tb_default_chain_def(void) {
+  return (tb_chain_def){.friction = 0.6f, .filter = tb_default_filter(), .enable_sensor_events = true};
+}
+
+static tb_chain* chain_at(const tb_world* w, int i) { return (tb_chain*)tb_pool_at(&w->chains, i); }
+
+static tb_chain_id make_chain_id(const tb_world* w, int index) {
+  return (tb_chain_id){index + 1, w->index, w->chains.generations[index]};
+}
+
+static void free_chain(tb_world* w, int index) {
+  free(chain_at(w, index)->shapes);
+  tb_pool_release(&w->chains, index);
+}
+
+tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
+  const tb_chain_id null_id = {0, 0, 0};
+  const char* fn = "tb_create_chain";
+  tb_world* w = NULL;
+  tb_body* b = tb_body_get_unlocked(body_id, &w, fn);
+  if (b == NULL) return null_id;
+  if (def == NULL || def->points == NULL) {
+    tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: %s is NULL", fn, def == NULL ? "def" : "def->points");
+    return null_id;
+  }
+  int n = def->count;
+  if (n < (def->is_loop ? 3 : 2)) {
+    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->count = %d, need at least %d points", fn, n, def->is_loop ? 3 : 2);
+    return null_id;
+  }
+  if (!tb_value_ok(def->friction) || def->friction < 0.0f || !tb_value_ok(def->restitution) ||
+      def->restitution < 0.0f) {
+    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->friction and def->restitution must be >= 0 and finite", fn);
+    return null_id;
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!tb_point_ok(def->points[i])) {
+      tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->points[%d] is not finite or beyond TB_MAX_LENGTH", fn, i);
+      return null_id;
+    }
+    int j = i + 1 < n ? i + 1 : 0;
+    if ((j > 0 || def->is_loop) &&
+        tb_distance_sq(def->points[i], def->points[j]) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
+      tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->points[%d] and [%d] are closer than TB_LINEAR_SLOP", fn, i, j);
+      return null_id;
+    }
+  }
+  int segments = def->is_loop ? n : n - 1;
+  int index = tb_pool_alloc(&w->chains);
+  int* shapes = malloc((size_t)segments * sizeof *shapes);
+  if (index < 0 || shapes == NULL) {
+    free(shapes);
+    if (index >= 0) tb_pool_release(&w->chains, index);
+    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for %d segments", fn, segments);
+    return null_id;
+  }
+  tb_chain* c = chain_at(w, index);
+  *c = (tb_chain){body_id.index1 - 1, shapes, 0, def->is_loop};
+  const tb_vec2* p = def->points;
+  for (int i = 0; i < segments; ++i) {
+    int i0 = i - 1, i2 = i + 1, i3 = i + 2;
+    if (def->is_loop) {
+      i0 = (i0 + n) % n;
+      i2 %= n;
+      i3 %= n;
+    }
+    tb_chain_segment cs = {i0 >= 0 ? p[i0] : p[i], {p[i], p[i2]}, i3 < n ? p[i3] : p[i2]};
+    tb_shape proto = {.type = TB_SHAPE_CHAIN_SEGMENT,
+                      .friction = def->friction,
+                      .restitution = def->restitution,
+                      .filter = def->filter,
+                      .enable_sensor_events = def->enable_sensor_events,
+                      .enable_contact_events = true,
+                      .chain = index,
+                      .user_data = def->user_data};
+    proto.geom.chain_segment = cs;
+    int s = tb_shape_attach(w, c->body, &proto, fn);
+    if (s < 0) { /* undo: the world stays as it was */
+      for (int k = 0; k < c->count; ++k) tb_shape_detach(w, c->shapes[k]);
+      free_chain(w, index);
+      return null_id;
+    }
+    c->shapes[c->count++] = s;
+  }
+  tb_body_update_mass(w, tb_body_at(w, c->body)); /* no mass, but the centre may move */
+  return make_chain_id(w, index);
+}
+
+tb_result tb_destroy_chain(tb_chain_id id) {
+  tb_world* w = NULL;
+  tb_chain* c = tb_chain_get(id, &w, "tb_destroy_chain");
+  if (c == NULL) return tb_last_result();
+  if (w->locked) return tb_fail(w, TB_ERR_LOCKED, "tb_destroy_chain: the world is inside tb_world_step");
+  int body = c->body;
+  for (int k = 0; k < c->count; ++k) tb_shape_detach(w, c->shapes[k]);
+  free_chain(w, id.index1 - 1);
+  tb_body_update_mass(w, tb_body_at(w, body));
+  return TB_OK;
+}
+
+bool tb_chain_is_valid(tb_chain_id id) { return tb_chain_get(id, NULL, NULL) != NULL; }
+
+int tb_chain_get_segment_count(tb_chain_id id) {
+  tb_chain* c = tb_chain_get(id, NULL, "tb_chain_get_segment_count");
+  return c != NULL ? c->count : 0;
+}
+
+int tb_chain_get_segments(tb_chain_id id, tb_shape_id* out, int capacity) {
+  tb_world* w = NULL;
+  tb_chain* c = tb_chain_get(id, &w, "tb_chain_get_segments");
+  if (c == NULL) return 0;
+  if (out == NULL && capacity > 0) {
+    tb_fail(w, TB_ERR_NULL_ARGUMENT, "tb_chain_get_segments: out is NULL");
+    return 0;
+  }
+  int n = 0;
+  for (; n < c->count && n < capacity; ++n) out[n] = tb_make_shape_id(w, c->shapes[n]);
+  return n;
+}
+
+void tb_chains_destroy_of_body(tb_world* w, int body) {
+  for (int i = 0; i < w->chains.high; ++i)
+    if (tb_pool_alive(&w->chains, i) && chain_at(w, i)->body == body) free_chain(w, i);
+}
+
+void tb_chains_free(tb_world* w) {
+  for (int i = 0; i < w->chains.high; ++i)
+    if (tb_pool_alive(&w->chains, i)) free(chain_at(w, i)->shapes);
+  tb_pool_free(&w->chains);
+}
+
+/* ---- manifolds ---------------------------------------------------------- */
+
+static const tb_manifold no_contact = {{0.0f, 0.0f}, {{{0.0f, 0.0f}, 0.0f, 0}, {{0.0f, 0.0f}, 0.0f, 0}}, 0};
+
+/* The filter described at the top, in the chain segment's frame. center_b is
+ * B's centre (world). */
+static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_vec2 center_b, tb_manifold m) {
+  tb_vec2 p1 = cs->segment.point1, p2 = cs->segment.point2;
+  tb_vec2 e = tb_sub(p2, p1);
+  tb_vec2 n = tb_normalize(tb_left_perp(e));
+  if (tb_dot(tb_sub(tb_inv_transform_point(xfa, center_b), p1), n) < 0.0f) return no_contact;
+  if (m.point_count == 0) return m;
+  tb_vec2 nm = tb_inv_rotate(xfa.q, m.normal);
+  float face = tb_dot(nm, n);
+  if (face <= 0.0f) return no_contact;
+  if (face >= 1.0f - 1.0e-4f) return m;
+  /* a vertex region: which end is it at? */
+  tb_vec2 local = tb_inv_transform_point(xfa, m.points[0].point);
+  bool at_start = tb_dot(tb_sub(local, p1), e) < 0.5f * tb_dot(e, e);
+  tb_vec2 neighbour = at_start ? tb_sub(p1, cs->ghost1) : tb_sub(cs->ghost2, p2);
+  if (tb_length_sq(neighbour) == 0.0f) return m; /* the open end of a chain: a real corner */
+  /* convex for a left-facing chain: the path turns clockwise at the joint */
+  float turn = at_start ? tb_cross(neighbour, e) : tb_cross(e, neighbour);
+  if (turn >= 0.0f) return no_contact; /* flat or concave: the neighbour's face owns it */
+  tb_vec2 nn = tb_normalize(tb_left_perp(neighbour));
+  float other = tb_dot(nm, nn);
+  bool mine = at_start ? face > other : face >= other; /* ties go to the earlier segment */
+  return mine ? m : no_contact;
+}
+
+tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_transform xfa, const tb_circle* b,
+                                                tb_transform xfb) {
+  tb_manifold m = tb_collide_segment_and_circle(&a->segment, xfa, b, xfb);
+  return one_sided(a, xfa, tb_transform_point(xfb, b->center), m);
+}
+
+tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,
+                                                 tb_transform xfb) {
+  tb_manifold m = tb_collide_segment_and_capsule(&a->segment, xfa, b, xfb);
+  return one_sided(a, xfa, tb_transform_point(xfb, tb_lerp(b->center1, b->center2, 0.5f)), m);
+}
+
+tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
+                                                 tb_transform xfb) {
+  tb_manifold m = tb_collide_segment_and_polygon(&a->segment, xfa, b, xfb);
+  return one_sided(a, xfa, tb_transform_point(xfb, b->centroid), m);
+}

@@ -1,0 +1,240 @@
+/* Contacts: creation from broad-phase pairs, the narrow phase and its events. */
+#include "contact.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "math_internal.h"
+#include "world.h"
+
+/* ---- manifold dispatch ----------------------------------------------------
+ * One function per unordered pair of types, with the shape that comes first
+ * in the function's name as A. A contact stores its shapes in that order. */
+
+typedef tb_manifold collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb);
+
+#define COLLIDE(name, fa, fb, call)                                                                \
+  static tb_manifold name(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb) { \
+    return call(&a->geom.fa, xfa, &b->geom.fb, xfb);                                               \
+  }
+COLLIDE(circles, circle, circle, tb_collide_circles)
+COLLIDE(capsule_circle, capsule, circle, tb_collide_capsule_and_circle)
+COLLIDE(capsules, capsule, capsule, tb_collide_capsules)
+COLLIDE(segment_circle, segment, circle, tb_collide_segment_and_circle)
+COLLIDE(segment_capsule, segment, capsule, tb_collide_segment_and_capsule)
+COLLIDE(segment_polygon, segment, polygon, tb_collide_segment_and_polygon)
+COLLIDE(polygon_circle, polygon, circle, tb_collide_polygon_and_circle)
+COLLIDE(polygon_capsule, polygon, capsule, tb_collide_polygon_and_capsule)
+COLLIDE(polygons, polygon, polygon, tb_collide_polygons)
+COLLIDE(chain_circle, chain_segment, circle, tb_collide_chain_segment_and_circle)
+COLLIDE(chain_capsule, chain_segment, capsule, tb_collide_chain_segment_and_capsule)
+COLLIDE(chain_polygon, chain_segment, polygon, tb_collide_chain_segment_and_polygon)
+#undef COLLIDE
+
+/* [type of A][type of B]; NULL where the pair is taken the other way round */
+static collide_fn* const collide_table[5][5] = {
+    [TB_SHAPE_CIRCLE] = {[TB_SHAPE_CIRCLE] = circles},
+    [TB_SHAPE_CAPSULE] = {[TB_SHAPE_CIRCLE] = capsule_circle, [TB_SHAPE_CAPSULE] = capsules},
+    [TB_SHAPE_SEGMENT] = {[TB_SHAPE_CIRCLE] = segment_circle,
+                          [TB_SHAPE_CAPSULE] = segment_capsule,
+                          [TB_SHAPE_POLYGON] = segment_polygon},
+    [TB_SHAPE_POLYGON] = {[TB_SHAPE_CIRCLE] = polygon_circle,
+                          [TB_SHAPE_CAPSULE] = polygon_capsule,
+                          [TB_SHAPE_POLYGON] = polygons},
+    [TB_SHAPE_CHAIN_SEGMENT] = {[TB_SHAPE_CIRCLE] = chain_circle,
+                                [TB_SHAPE_CAPSULE] = chain_capsule,
+                                [TB_SHAPE_POLYGON] = chain_polygon},
+};
+
+bool tb_shape_types_collide(tb_shape_type a, tb_shape_type b) {
+  return collide_table[a][b] != NULL || collide_table[b][a] != NULL;
+}
+
+/* ---- body contact lists ------------------------------------------------ */
+
+static tb_contact* contact_at(tb_world* w, int i) { return (tb_contact*)tb_pool_at(&w->contacts, i); }
+
+static void link_edge(tb_world* w, int contact, int side) {
+  tb_contact* c = contact_at(w, contact);
+  tb_body* b = tb_body_at(w, c->edges[side].body);
+  int key = contact * 2 + side;
+  c->edges[side].prev = -1;
+  c->edges[side].next = b->contact_list;
+  if (b->contact_list >= 0) contact_at(w, b->contact_list >> 1)->edges[b->contact_list & 1].prev = key;
+  b->contact_list = key;
+  b->contact_count += 1;
+}
+
+static void unlink_edge(tb_world* w, int contact, int side) {
+  tb_contact* c = contact_at(w, contact);
+  tb_contact_edge* e = &c->edges[side];
+  tb_body* b = tb_body_at(w, e->body);
+  if (e->prev >= 0) contact_at(w, e->prev >> 1)->edges[e->prev & 1].next = e->next;
+  else b->contact_list = e->next;
+  if (e->next >= 0) contact_at(w, e->next >> 1)->edges[e->next & 1].prev = e->prev;
+  b->contact_count -= 1;
+}
+
+/* ---- creation and destruction ------------------------------------------- */
+
+static float mix_friction(const tb_world* w, float a, float b) {
+  return w->friction_mix != NULL ? w->friction_mix(a, b, w->mix_context) : sqrtf(a * b);
+}
+
+static float mix_restitution(const tb_world* w, float a, float b) {
+  return w->restitution_mix != NULL ? w->restitution_mix(a, b, w->mix_context) : (a > b ? a : b);
+}
+
+bool tb_contact_create(tb_world* w, int ia, int ib) {
+  const tb_shape* sa = tb_shape_at(w, ia);
+  const tb_shape* sb = tb_shape_at(w, ib);
+  if (collide_table[sa->type][sb->type] == NULL || (sa->type == sb->type && ib < ia)) {
+    int t = ia;
+    ia = ib;
+    ib = t;
+  }
+  int index = tb_pool_alloc(&w->contacts);
+  if (index < 0) return false;
+  if (!tb_pair_add(&w->broad_phase, ia, ib, index)) {
+    tb_pool_release(&w->contacts, index);
+    return false;
+  }
+  sa = tb_shape_at(w, ia);
+  sb = tb_shape_at(w, ib);
+  tb_contact* c = contact_at(w, index);
+  c->shape_a = ia;
+  c->shape_b = ib;
+  c->edges[0].body = sa->body;
+  c->edges[1].body = sb->body;
+  c->friction = mix_friction(w, sa->friction, sb->friction);
+  c->restitution = mix_restitution(w, sa->restitution, sb->restitution);
+  c->flags = TB_CONTACT_ENABLED;
+  if (sa->sensor || sb->sensor) c->flags |= TB_CONTACT_SENSOR;
+  if (sa->enable_contact_events || sb->enable_contact_events) c->flags |= TB_CONTACT_EVENTS;
+  if (sa->enable_hit_events || sb->enable_hit_events) c->flags |= TB_CONTACT_HIT_EVENTS;
+  if (sa->enable_pre_solve_events || sb->enable_pre_solve_events) c->flags |= TB_CONTACT_PRE_SOLVE;
+  link_edge(w, index, 0);
+  link_edge(w, index, 1);
+  return true;
+}
+
+static void push_event(void** data, int* count, int* capacity, const void* event, size_t size) {
+  if (!tb_array_reserve(data, capacity, *count + 1, size)) return; /* out of memory: the event is dropped */
+  memcpy((char*)*data + (size_t)*count * size, event, size);
+  *count += 1;
+}
+
+static void report_end(tb_world* w, const tb_contact* c) {
+  if (!(c->flags & TB_CONTACT_TOUCHING)) return;
+  tb_shape_id a = tb_make_shape_id(w, c->shape_a), b = tb_make_shape_id(w, c->shape_b);
+  if (c->flags & TB_CONTACT_SENSOR) {
+    bool a_is_sensor = tb_shape_at(w, c->shape_a)->sensor;
+    tb_sensor_event e = {a_is_sensor ? a : b, a_is_sensor ? b : a};
+    push_event((void**)&w->sensor_end_events, &w->sensor_end_count, &w->sensor_end_capacity, &e, sizeof e);
+  } else if (c->flags & TB_CONTACT_EVENTS) {
+    tb_contact_end_event e = {a, b};
+    push_event((void**)&w->end_events, &w->end_count, &w->end_capacity, &e, sizeof e);
+  }
+}
+
+void tb_contact_destroy(tb_world* w, int index) {
+  tb_contact* c = contact_at(w, index);
+  report_end(w, c);
+  tb_pair_remove(&w->broad_phase, c->shape_a, c->shape_b);
+  unlink_edge(w, index, 0);
+  unlink_edge(w, index, 1);
+  tb_pool_release(&w->contacts, index);
+}
+
+void tb_contacts_destroy_of_body(tb_world* w, int body, int shape) {
+  int key = tb_body_at(w, body)->contact_list;
+  while (key >= 0) {
+    tb_contact* c = contact_at(w, key >> 1);
+    int next = c->edges[key & 1].next;
+    if (shape < 0 || c->shape_a == shape || c->shape_b == shape) tb_contact_destroy(w, key >> 1);
+    key = next;
+  }
+}
+
+/* ---- narrow phase ---------------------------------------------------------- */
+
+static bool aabbs_overlap(tb_aabb a, tb_aabb b) {
+  return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
+}
+
+/* Approach speed: the largest -(v_B - v_A) . n over the manifold's points. */
+static float approach_speed(const tb_world* w, const tb_contact* c, tb_vec2* where) {
+  const tb_body* a = tb_body_at(w, c->edges[0].body);
+  const tb_body* b = tb_body_at(w, c->edges[1].body);
+  float best = 0.0f;
+  for (int i = 0; i < c->manifold.point_count; ++i) {
+    tb_vec2 p = c->manifold.points[i].point;
+    tb_vec2 va = tb_add(a->linear_velocity, tb_cross_sv(a->angular_velocity, tb_sub(p, a->center)));
+    tb_vec2 vb = tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(p, b->center)));
+    float s = -tb_dot(tb_sub(vb, va), c->manifold.normal);
+    if (s > best || i == 0) {
+      best = s;
+      *where = p;
+    }
+  }
+  return best;
+}
+
+/* Events of a contact that starts touching: sensor begin, or contact begin and hit. */
+static void report_begin(tb_world* w, const tb_contact* c) {
+  tb_shape_id a = tb_make_shape_id(w, c->shape_a), b = tb_make_shape_id(w, c->shape_b);
+  if (c->flags & TB_CONTACT_SENSOR) {
+    bool a_is_sensor = tb_shape_at(w, c->shape_a)->sensor;
+    tb_sensor_event e = {a_is_sensor ? a : b, a_is_sensor ? b : a};
+    push_event((void**)&w->sensor_begin_events, &w->sensor_begin_count, &w->sensor_begin_capacity, &e, sizeof e);
+    return;
+  }
+  if (c->flags & TB_CONTACT_EVENTS) {
+    tb_contact_begin_event e = {a, b, c->manifold};
+    push_event((void**)&w->begin_events, &w->begin_count, &w->begin_capacity, &e, sizeof e);
+  }
+  if (c->flags & TB_CONTACT_HIT_EVENTS) {
+    tb_vec2 point = {0.0f, 0.0f};
+    float speed = approach_speed(w, c, &point);
+    if (speed > w->hit_event_threshold) {
+      tb_contact_hit_event e = {a, b, point, c->manifold.normal, speed};
+      push_event((void**)&w->hit_events, &w->hit_count, &w->hit_capacity, &e, sizeof e);
+    }
+  }
+}
+
+void tb_contacts_update(tb_world* w) {
+  const tb_broad_phase* bp = &w->broad_phase;
+  for (int i = 0; i < w->contacts.high; ++i) {
+    if (!tb_pool_alive(&w->contacts, i)) continue;
+    tb_contact* c = contact_at(w, i);
+    const tb_shape* sa = tb_shape_at(w, c->shape_a);
+    const tb_shape* sb = tb_shape_at(w, c->shape_b);
+    if (!aabbs_overlap(tb_tree_get_fat_aabb(&bp->trees[sa->tree], sa->proxy),
+                       tb_tree_get_fat_aabb(&bp->trees[sb->tree], sb->proxy))) {
+      tb_contact_destroy(w, i);
+      continue;
+    }
+    c->manifold = collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb,
+                                                   tb_body_at(w, sb->body)->transform);
+    bool touching = c->manifold.point_count > 0;
+    if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */
+      touching = false;
+      for (int k = 0; k < c->manifold.point_count; ++k) touching |= c->manifold.points[k].separation < 0.0f;
+    }
+    bool was_touching = (c->flags & TB_CONTACT_TOUCHING) != 0;
+    if (touching && !was_touching) {
+      c->flags |= TB_CONTACT_TOUCHING;
+      report_begin(w, c);
+    } else if (!touching && was_touching) {
+      report_end(w, c); /* reads the touching flag: clear it after */
+      c->flags &= ~(uint32_t)TB_CONTACT_TOUCHING;
+    }
+    c->flags |= TB_CONTACT_ENABLED;
+    if (touching && (c->flags & TB_CONTACT_PRE_SOLVE) && !(c->flags & TB_CONTACT_SENSOR) && w->pre_solve != NULL &&
+        !w->pre_solve(tb_make_shape_id(w, c->shape_a), tb_make_shape_id(w, c->shape_b), &c->manifold,
+                      w->pre_solve_context))
+      c->flags &= ~(uint32_t)TB_CONTACT_ENABLED;
+  }
+}

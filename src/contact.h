@@ -1,0 +1,42 @@
+/* Contacts: a pair of shapes whose fat AABBs overlap, with its manifold. */
+#ifndef TB_CONTACT_H
+#define TB_CONTACT_H
+
+#include "tumble.h"
+
+enum {
+  TB_CONTACT_TOUCHING = 1 << 0, /* manifold has points (sensor: shapes overlap) */
+  TB_CONTACT_SENSOR = 1 << 1,
+  TB_CONTACT_ENABLED = 1 << 2, /* not disabled by the pre-solve callback */
+  TB_CONTACT_EVENTS = 1 << 3,  /* begin/end events wanted */
+  TB_CONTACT_HIT_EVENTS = 1 << 4,
+  TB_CONTACT_PRE_SOLVE = 1 << 5
+};
+
+typedef struct tb_contact_edge {
+  int body;
+  int prev, next; /* edge keys (contact * 2 + side) in the body's list, -1 at the ends */
+} tb_contact_edge;
+
+typedef struct tb_contact {
+  int shape_a, shape_b; /* ordered so that a collide function takes (A, B) */
+  tb_contact_edge edges[2];
+  tb_manifold manifold;
+  float friction, restitution;
+  uint32_t flags;
+} tb_contact;
+
+struct tb_world;
+
+/* Creates the contact of two shapes that passed the filters. false when out of memory. */
+bool tb_contact_create(struct tb_world* w, int shape_a, int shape_b);
+/* Removes a contact; reports an end event when it was touching (and wants events). */
+void tb_contact_destroy(struct tb_world* w, int contact);
+/* Destroys every contact of a body (all its shapes), or of one shape when shape >= 0. */
+void tb_contacts_destroy_of_body(struct tb_world* w, int body, int shape);
+/* Narrow phase for every contact; records begin, end, hit and sensor events. */
+void tb_contacts_update(struct tb_world* w);
+/* Whether a pair of shape types has a manifold function (segment-segment has none). */
+bool tb_shape_types_collide(tb_shape_type a, tb_shape_type b);
+
+#endif

@@ -1,0 +1,33 @@
+/* Contact manifolds (the narrow phase): the feature-id layout (not public).
+ *
+ * A manifold point's id names the pair of features that made it, one byte each:
+ *   bits 0-7   index of the feature on shape A (vertex or edge index)
+ *   bits 8-15  index of the feature on shape B
+ *   bit  16    the feature on A is an edge (face), else a vertex
+ *   bit  24    the feature on B is an edge (face), else a vertex
+ * An edge i runs from vertex i to vertex i + 1. A circle's centre is vertex 0; a
+ * capsule or segment is a two-vertex polygon whose edge 0 faces its right side
+ * (the side of right_perp(point2 - point1)) and edge 1 the other.
+ *
+ * The id depends only on which features touch, never on which shape supplied the
+ * reference face: "vertex k of B on edge f of A" is the same id whether B's edge
+ * was clipped by A or A's face was the one clipped. So when two parallel faces
+ * swap roles between steps (a box resting flat on another), the ids stay put.
+ * One-point contacts of a circle always use id 0: the point is the same contact
+ * whether the circle touches a face or a corner, so its impulse carries over as
+ * it rolls over the corner. */
+#ifndef TB_MANIFOLD_H
+#define TB_MANIFOLD_H
+
+#include <stdint.h>
+
+#include "tumble.h"
+
+#define TB_FEATURE_VERTEX 0u
+#define TB_FEATURE_EDGE 1u
+
+static inline uint32_t tb_make_feature_id(uint32_t index_a, uint32_t type_a, uint32_t index_b, uint32_t type_b) {
+  return (index_a & 0xffu) | (index_b & 0xffu) << 8 | type_a << 16 | type_b << 24;
+}
+
+#endif

@@ -1,0 +1,132 @@
+/* Dynamic AABB tree: the broad phase's bounding volume hierarchy (not public).
+ *
+ * Leaves are proxies: a fat AABB (the tight AABB grown by the tree's margin, and
+ * optionally stretched along a predicted displacement), a user id and category
+ * bits. A proxy id is the index of its leaf node and stays the same for the
+ * proxy's life, re-insertions included. Nodes live in one growable array with a
+ * free list; the tree links them by index.
+ *
+ * Insertion picks the sibling of least perimeter cost (2D surface-area heuristic)
+ * by branch and bound; on the way back up, each ancestor is rebalanced by a
+ * height rotation when its children's heights differ by more than one, else by
+ * the child/grandchild swap that most reduces the perimeter (when it keeps the
+ * node balanced). Every internal node thus keeps children heights within one
+ * (AVL), so a tree of n proxies is at most about 1.44 log2 n high, whatever the
+ * insertion order. Queries use an explicit stack, never recursion.
+ *
+ * Same sequence of calls, same tree: nothing depends on addresses or time.
+ * Preconditions are checked, never asserted: bad input gives an error value and
+ * leaves the tree unchanged. Proxy ids carry no generation: the owner (the broad
+ * phase) must not use an id after destroying its proxy. */
+#ifndef TB_TREE_H
+#define TB_TREE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "tumble.h"
+
+#define TB_TREE_NULL (-1)
+
+/* Entries of the traversal stacks kept on the C stack; deeper trees spill onto
+ * the heap (queries) or prune the deepest candidates (insertion). */
+#ifndef TB_TREE_STACK_SIZE
+#define TB_TREE_STACK_SIZE 128
+#endif
+
+typedef struct tb_tree_node {
+  tb_aabb aabb;           /* leaf: the fat AABB; internal: union of the children */
+  uint64_t category_bits; /* leaf: the proxy's; internal: OR of the children's */
+  int32_t parent;         /* TB_TREE_NULL at the root; next free node when free */
+  int32_t child1, child2; /* TB_TREE_NULL in a leaf */
+  int32_t user_id;        /* leaf only */
+  int32_t height;         /* 0: leaf, -1: free */
+} tb_tree_node;
+
+typedef struct tb_tree {
+  tb_tree_node* nodes;
+  int32_t capacity;   /* slots in nodes */
+  int32_t node_count; /* slots in use (leaves + internal nodes) */
+  int32_t free_list;
+  int32_t root;
+  int32_t proxy_count;
+  float margin; /* fat AABB = tight AABB grown by this on every side (m) */
+} tb_tree;
+
+/* Called per proxy whose fat AABB overlaps the query box; return false to stop.
+ * It must not modify the tree. */
+typedef bool tb_tree_query_fn(int32_t proxy, int32_t user_id, void* context);
+
+/* The segment origin + t translation, 0 <= t <= max_fraction. */
+typedef struct tb_tree_ray_input {
+  tb_vec2 origin;
+  tb_vec2 translation;
+  float max_fraction;
+} tb_tree_ray_input;
+
+/* Called per proxy whose fat AABB the (clipped) segment touches, with the current
+ * clipped input. Return 0 to stop, < 0 to ignore the proxy, else a new max
+ * fraction (a value >= the current one changes nothing). Must not modify the tree. */
+typedef float tb_tree_ray_fn(const tb_tree_ray_input* input, int32_t proxy, int32_t user_id, void* context);
+
+/* An empty tree (allocates nothing yet). margin: finite, 0 <= margin <= TB_MAX_LENGTH.
+ * Errors: TB_ERR_NULL_ARGUMENT, TB_ERR_INVALID_ARGUMENT. */
+tb_result tb_tree_create(tb_tree* tree, float margin);
+/* Frees all memory; the tree is left empty and usable (as if just created). */
+void tb_tree_destroy(tb_tree* tree);
+
+/* Insert a proxy for a tight AABB (finite, lower <= upper, within TB_MAX_LENGTH).
+ * Returns its id, or TB_TREE_NULL on bad input or when out of memory. */
+int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits, int32_t user_id);
+/* False (and nothing done) when proxy is not a live proxy of this tree. */
+bool tb_tree_destroy_proxy(tb_tree* tree, int32_t proxy);
+/* The proxy's tight AABB is now aabb, and it is expected to move by about
+ * displacement before the next call ({0, 0}: no prediction). Re-inserts, with a
+ * new fat AABB, only when aabb leaves the fat AABB or when the fat AABB is more
+ * than twice (in perimeter) the one this call would build (a stretch no longer
+ * needed). Returns whether it re-inserted; false on bad input (tree unchanged).
+ * Never allocates. */
+bool tb_tree_move_proxy(tb_tree* tree, int32_t proxy, tb_aabb aabb, tb_vec2 displacement);
+
+bool tb_tree_is_proxy(const tb_tree* tree, int32_t proxy);
+/* The stored (fat) AABB; a zero box for a bad proxy. */
+tb_aabb tb_tree_get_fat_aabb(const tb_tree* tree, int32_t proxy);
+/* TB_TREE_NULL for a bad proxy. */
+int32_t tb_tree_get_user_id(const tb_tree* tree, int32_t proxy);
+/* 0 for a bad proxy. */
+uint64_t tb_tree_get_category_bits(const tb_tree* tree, int32_t proxy);
+bool tb_tree_set_category_bits(tb_tree* tree, int32_t proxy, uint64_t category_bits);
+
+/* Calls fn for every proxy with (category_bits & mask) != 0 whose fat AABB
+ * overlaps aabb (touching counts). Errors: TB_ERR_NULL_ARGUMENT (tree or fn),
+ * TB_ERR_INVALID_ARGUMENT (bad box), TB_ERR_OUT_OF_MEMORY (the traversal stack
+ * could not grow; the query stopped early). */
+tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tree_query_fn* fn, void* context);
+/* Calls fn for the proxies (category_bits & mask) != 0 whose fat AABB the segment
+ * touches, nearer boxes first (by entry fraction, per subtree; not a global
+ * sort). Errors as tb_tree_query; also a non-finite input or max_fraction < 0. */
+tb_result tb_tree_ray_cast(const tb_tree* tree, const tb_tree_ray_input* input, uint64_t mask, tb_tree_ray_fn* fn,
+                           void* context);
+/* The segment-box test the ray cast uses: true when the segment of input touches
+ * box; *fraction (may be NULL) receives the entry fraction (0 when it starts inside). */
+bool tb_tree_ray_hits_aabb(const tb_tree_ray_input* input, tb_aabb box, float* fraction);
+
+int32_t tb_tree_get_proxy_count(const tb_tree* tree);
+/* Edges on the longest root-to-leaf path: 0 for an empty or one-proxy tree. */
+int tb_tree_get_height(const tb_tree* tree);
+/* The 2D surface-area-heuristic cost: the sum of the perimeters of the internal
+ * nodes over the root's perimeter (1 for two proxies; 0 when undefined). */
+float tb_tree_get_area_ratio(const tb_tree* tree);
+/* Full check: links, free list, counts, heights, category bits, every internal
+ * AABB equal to the union of its children's. */
+bool tb_tree_validate(const tb_tree* tree);
+
+/* Rebuilds the hierarchy over the current proxies, top-down with a binned
+ * perimeter heuristic (for static or freshly loaded sets: about 5% lower cost
+ * than inserts). Proxy ids and fat AABBs are kept. The result is not AVL
+ * balanced (height follows the splits, typically log2 n + 3); later updates
+ * rebalance the paths they touch. Errors: TB_ERR_NULL_ARGUMENT,
+ * TB_ERR_OUT_OF_MEMORY (tree unchanged). */
+tb_result tb_tree_rebuild(tb_tree* tree);
+
+#endif
