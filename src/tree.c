@@ -27,8 +27,8 @@
  * cost of a 10,000-proxy tree built by inserts is within 1% of the exact search,
  * with 16 it is 18% higher. A proxy moved to a box overlapping its old one starts
  * from its old sibling's cost, a tight bound: 16 then gives the cost of the full
- * search (within 1% in tests/test_tree.c and tools/bench_tree.c) for 7% less
- * time per step (15% with prediction). */
+ * search (within 1% in tests/test_tree.c and tools/bench_tree.c) for about 10%
+ * less time per step. */
 #ifndef TB_TREE_CREATE_BUDGET
 #define TB_TREE_CREATE_BUDGET 64
 #endif
