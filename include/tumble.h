@@ -473,7 +473,8 @@ typedef struct tb_manifold {
 
 /* Contact manifolds of every pair of shape types, each shape placed by its
  * transform. Swapping the arguments gives the same points with the normal
- * reversed (each unordered pair has one function, named A first). */
+ * reversed (each unordered pair has one function, named A first). NULL shapes
+ * or non-finite transforms give an empty manifold and record an error. */
 tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
 tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
 tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb);

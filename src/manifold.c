@@ -32,7 +32,7 @@
 /* ------------------------------------------------------------- helpers -- */
 
 /* inv(a) * b: the placement of B seen from A's frame. */
-static tb_transform relative_transform(tb_transform a, tb_transform b) {
+static inline tb_transform relative_transform(tb_transform a, tb_transform b) {
   tb_rot q = {a.q.c * b.q.c + a.q.s * b.q.s, a.q.c * b.q.s - a.q.s * b.q.c};
   return (tb_transform){tb_inv_rotate(a.q, tb_sub(b.p, a.p)), q};
 }
@@ -41,7 +41,7 @@ static bool transform_ok(tb_transform xf) { return tb_vec_finite(xf.p) && isfini
 
 /* Public entry points reject NULL shapes and non-finite transforms with an empty
  * manifold (the shapes themselves are trusted: tb_check_* vetted them). */
-static bool args_ok(const void* a, tb_transform xfa, const void* b, tb_transform xfb, const char* fn) {
+static inline bool args_ok(const void* a, tb_transform xfa, const void* b, tb_transform xfb, const char* fn) {
   if (a == NULL || b == NULL) {
     tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: shape %s is NULL", fn, a == NULL ? "a" : "b");
     return false;
@@ -55,47 +55,74 @@ static bool args_ok(const void* a, tb_transform xfa, const void* b, tb_transform
 
 static float clamp01(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); }
 
-/* Moves a manifold computed in A's frame to world. */
-static tb_manifold to_world(tb_manifold m, tb_transform xfa) {
-  m.normal = tb_rotate(xfa.q, m.normal);
-  for (int i = 0; i < m.point_count; ++i) m.points[i].point = tb_transform_point(xfa, m.points[i].point);
-  return m;
+/* A manifold in A's frame, as the helpers build it; to_world moves it to world
+ * once. to_world returns one compound literal built from scalars, which the
+ * compiler writes straight into the caller's return slot. (GCC 12 does not
+ * elide the copy of a local tb_manifold that is returned, and that copy reads
+ * back 16 bytes at a time what was just stored 4 at a time, which defeats
+ * store forwarding: it cost as much as a circle-circle collision.) */
+typedef struct local_manifold {
+  tb_vec2 normal; /* A to B */
+  tb_vec2 point[2];
+  float sep[2];
+  uint32_t id[2];
+  int count;
+} local_manifold;
+
+static inline void add_point(local_manifold* m, tb_vec2 p, float sep, uint32_t id) {
+  m->point[m->count] = p;
+  m->sep[m->count] = sep;
+  m->id[m->count] = id;
+  m->count += 1;
+}
+
+static inline tb_manifold to_world(const local_manifold* l, tb_transform xfa) {
+  tb_manifold_point p0 = {{0.0f, 0.0f}, 0.0f, 0u}, p1 = p0;
+  tb_vec2 n = {0.0f, 0.0f};
+  if (l->count > 0) {
+    n = tb_rotate(xfa.q, l->normal);
+    p0 = (tb_manifold_point){tb_transform_point(xfa, l->point[0]), l->sep[0], l->id[0]};
+  }
+  if (l->count > 1) p1 = (tb_manifold_point){tb_transform_point(xfa, l->point[1]), l->sep[1], l->id[1]};
+  return (tb_manifold){n, {p0, p1}, l->count};
 }
 
 /* One contact between core points pa (on A) and pb (on B), A's frame, radii ra
  * and rb. The normal is unit(pb - pa), or unit(fallback) when the cores
  * (nearly) coincide and no direction is meaningful. */
-static tb_manifold point_contact(tb_vec2 pa, tb_vec2 pb, float ra, float rb, tb_vec2 fallback, tb_transform xfa) {
-  tb_manifold m = {0};
+static inline void point_contact(local_manifold* m, tb_vec2 pa, tb_vec2 pb, float ra, float rb, tb_vec2 fallback) {
   tb_vec2 d = tb_sub(pb, pa);
   float dist = tb_length(d);
   float sep = dist - ra - rb;
-  if (!(sep < TB_SPECULATIVE_DISTANCE)) return m; /* also rejects NaN */
+  if (!(sep < TB_SPECULATIVE_DISTANCE)) return; /* also rejects NaN */
   tb_vec2 n = dist > FLT_EPSILON ? tb_scale(1.0f / dist, d) : tb_normalize(fallback);
-  m.normal = n;
+  m->normal = n;
   /* A's surface is pa + ra n, B's is pa + (dist - rb) n: midway is ra + sep / 2 */
-  m.points[0] = (tb_manifold_point){tb_mul_add(pa, ra + 0.5f * sep, n), sep, 0u};
-  m.point_count = 1;
-  return to_world(m, xfa);
+  add_point(m, tb_mul_add(pa, ra + 0.5f * sep, n), sep, 0u);
 }
 
 /* ------------------------------------------------------ circle contacts -- */
 
 tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_circles")) return (tb_manifold){0};
-  tb_vec2 cb = tb_transform_point(relative_transform(xfa, xfb), b->center);
-  return point_contact(a->center, cb, a->radius, b->radius, tb_v2(1.0f, 0.0f), xfa);
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_circles")) {
+    tb_vec2 cb = tb_transform_point(relative_transform(xfa, xfb), b->center);
+    point_contact(&m, a->center, cb, a->radius, b->radius, tb_v2(1.0f, 0.0f));
+  }
+  return to_world(&m, xfa);
 }
 
 /* Circle b against segment p1-p2 (A's frame) inflated by ra. */
-static tb_manifold segment_circle(tb_vec2 p1, tb_vec2 p2, float ra, const tb_circle* b, tb_transform xfa,
-                                  tb_transform xfb) {
+static inline void segment_circle(local_manifold* m, tb_vec2 p1, tb_vec2 p2, float ra, const tb_circle* b,
+                                  tb_transform xfa, tb_transform xfb) {
   tb_vec2 c = tb_transform_point(relative_transform(xfa, xfb), b->center);
   tb_vec2 e = tb_sub(p2, p1);
   float u = tb_dot(tb_sub(c, p1), e);
   /* beyond an end: radial from the end centre */
-  if (u <= 0.0f) return point_contact(p1, c, ra, b->radius, tb_right_perp(e), xfa);
-  if (u >= tb_dot(e, e)) return point_contact(p2, c, ra, b->radius, tb_right_perp(e), xfa);
+  if (u <= 0.0f || u >= tb_dot(e, e)) {
+    point_contact(m, u <= 0.0f ? p1 : p2, c, ra, b->radius, tb_right_perp(e));
+    return;
+  }
   /* beside the segment: along its normal, taken directly rather than from c
    * minus the closest point, which would cancel digits; a centre right on the
    * core is pushed to the right side */
@@ -106,24 +133,23 @@ static tb_manifold segment_circle(tb_vec2 p1, tb_vec2 p2, float ra, const tb_cir
     s = -s;
   }
   float sep = s - ra - b->radius;
-  if (!(sep < TB_SPECULATIVE_DISTANCE)) return (tb_manifold){0};
-  tb_manifold m = {0};
-  m.normal = n;
-  m.points[0] = (tb_manifold_point){tb_mul_add(c, ra - s + 0.5f * sep, n), sep, 0u};
-  m.point_count = 1;
-  return to_world(m, xfa);
+  if (!(sep < TB_SPECULATIVE_DISTANCE)) return;
+  m->normal = n;
+  add_point(m, tb_mul_add(c, ra - s + 0.5f * sep, n), sep, 0u);
 }
 
-tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b,
-                                          tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_capsule_and_circle")) return (tb_manifold){0};
-  return segment_circle(a->center1, a->center2, a->radius, b, xfa, xfb);
+tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_capsule_and_circle"))
+    segment_circle(&m, a->center1, a->center2, a->radius, b, xfa, xfb);
+  return to_world(&m, xfa);
 }
 
-tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa, const tb_circle* b,
-                                          tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_segment_and_circle")) return (tb_manifold){0};
-  return segment_circle(a->point1, a->point2, 0.0f, b, xfa, xfb);
+tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_circle"))
+    segment_circle(&m, a->point1, a->point2, 0.0f, b, xfa, xfb);
+  return to_world(&m, xfa);
 }
 
 /* The circle's centre c is closest to a face or to a vertex of the core polygon.
@@ -132,11 +158,8 @@ tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa,
  * two vertices (the separation function of convex sets is unimodal around the
  * closest direction, so the best face is adjacent to the closest vertex). Inside
  * the core (s <= 0) the best face is the way out. */
-tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa, const tb_circle* b,
-                                          tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_polygon_and_circle")) return (tb_manifold){0};
-  tb_vec2 c = tb_transform_point(relative_transform(xfa, xfb), b->center);
-  float r = a->radius + b->radius;
+static inline void polygon_circle(local_manifold* m, const tb_polygon* a, tb_vec2 c, float rb) {
+  float r = a->radius + rb;
   int face = 0;
   float s = -FLT_MAX;
   for (int i = 0; i < a->count; ++i) {
@@ -146,21 +169,29 @@ tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa,
       face = i;
     }
   }
-  if (!(s - r < TB_SPECULATIVE_DISTANCE)) return (tb_manifold){0};
+  if (!(s - r < TB_SPECULATIVE_DISTANCE)) return;
   tb_vec2 v1 = a->vertices[face], v2 = a->vertices[face + 1 < a->count ? face + 1 : 0];
   if (s > 0.0f) {
     tb_vec2 e = tb_sub(v2, v1);
-    if (tb_dot(tb_sub(c, v1), e) < 0.0f) return point_contact(v1, c, a->radius, b->radius, a->normals[face], xfa);
-    if (tb_dot(tb_sub(c, v2), e) > 0.0f) return point_contact(v2, c, a->radius, b->radius, a->normals[face], xfa);
+    bool before = tb_dot(tb_sub(c, v1), e) < 0.0f;
+    bool after = tb_dot(tb_sub(c, v2), e) > 0.0f;
+    if (before || after) {
+      point_contact(m, before ? v1 : v2, c, a->radius, rb, a->normals[face]);
+      return;
+    }
   }
-  tb_manifold m = {0};
   tb_vec2 n = a->normals[face];
   float sep = s - r;
-  m.normal = n;
+  m->normal = n;
   /* core point c - s n; A's surface a->radius further along n */
-  m.points[0] = (tb_manifold_point){tb_mul_add(c, a->radius - s + 0.5f * sep, n), sep, 0u};
-  m.point_count = 1;
-  return to_world(m, xfa);
+  add_point(m, tb_mul_add(c, a->radius - s + 0.5f * sep, n), sep, 0u);
+}
+
+tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_polygon_and_circle"))
+    polygon_circle(&m, a, tb_transform_point(relative_transform(xfa, xfb), b->center), b->radius);
+  return to_world(&m, xfa);
 }
 
 /* ------------------------------------------- polygon-like contacts (SAT) -- */
@@ -208,7 +239,7 @@ static float max_separation(const core* p, const core* q, float limit, int* edge
   for (int i = 0; i < p->count; ++i) {
     tb_vec2 n = p->n[i], v = p->v[i];
     float s = FLT_MAX;
-    for (int j = 0; j < q->count; ++j) {
+    for (int j = 0; j < q->count; ++j) { /* difference first: exact for nearby points */
       float d = tb_dot(n, tb_sub(q->v[j], v));
       s = d < s ? d : s;
     }
@@ -259,13 +290,14 @@ typedef struct face_pair {
 } face_pair;
 
 /* Feature id of a reference-side and an incident-side feature, as (A, B). */
-static uint32_t pair_id(const face_pair* fp, int ref_index, uint32_t ref_type, int inc_index, uint32_t inc_type) {
+static inline uint32_t pair_id(const face_pair* fp, int ref_index, uint32_t ref_type, int inc_index,
+                               uint32_t inc_type) {
   return fp->flip ? tb_make_feature_id((uint32_t)inc_index, inc_type, (uint32_t)ref_index, ref_type)
                   : tb_make_feature_id((uint32_t)ref_index, ref_type, (uint32_t)inc_index, inc_type);
 }
 
 /* Feature at fraction f of edge k1 -> k2: a vertex at the ends, else the edge. */
-static void feature_at(float f, int k1, int k2, int* index, uint32_t* type) {
+static inline void feature_at(float f, int k1, int k2, int* index, uint32_t* type) {
   *index = f == 0.0f ? k1 : (f == 1.0f ? k2 : k1);
   *type = (f == 0.0f || f == 1.0f) ? TB_FEATURE_VERTEX : TB_FEATURE_EDGE;
 }
@@ -274,8 +306,7 @@ static void feature_at(float f, int k1, int k2, int* index, uint32_t* type) {
  * The normal joins them: this is the rounded-corner case (vertex against
  * vertex, gap beyond the tolerance), where no face normal is right. When they
  * (nearly) touch the separating axis is kept, with its depth. */
-static tb_manifold closest_contact(const face_pair* fp, float fr, float fi, tb_transform xfa) {
-  tb_manifold m = {0};
+static void closest_contact(local_manifold* m, const face_pair* fp, float fr, float fi) {
   tb_vec2 cr = tb_lerp(fp->ref->v[fp->i1], fp->ref->v[fp->i2], fr);
   tb_vec2 ci = tb_lerp(fp->inc->v[fp->j1], fp->inc->v[fp->j2], fi);
   tb_vec2 d = tb_sub(ci, cr);
@@ -287,15 +318,13 @@ static tb_manifold closest_contact(const face_pair* fp, float fr, float fi, tb_t
     n = tb_scale(1.0f / dist, d);
     sep = dist - r;
   }
-  if (!(sep < TB_SPECULATIVE_DISTANCE)) return m;
+  if (!(sep < TB_SPECULATIVE_DISTANCE)) return;
   int ri, ii;
   uint32_t rt, it;
   feature_at(fr, fp->i1, fp->i2, &ri, &rt);
   feature_at(fi, fp->j1, fp->j2, &ii, &it);
-  m.normal = fp->flip ? tb_neg(n) : n;
-  m.points[0] = (tb_manifold_point){tb_mul_add(cr, fp->ref->radius + 0.5f * sep, n), sep, pair_id(fp, ri, rt, ii, it)};
-  m.point_count = 1;
-  return to_world(m, xfa);
+  m->normal = fp->flip ? tb_neg(n) : n;
+  add_point(m, tb_mul_add(cr, fp->ref->radius + 0.5f * sep, n), sep, pair_id(fp, ri, rt, ii, it));
 }
 
 /* Contact of two cores, both in A's frame (a's own frame).
@@ -307,21 +336,21 @@ static tb_manifold closest_contact(const face_pair* fp, float fr, float fi, tb_t
  * 2. Incident edge: the edge of the other core whose normal is most opposed.
  * 3. Cores apart (s beyond the tolerance) and the closest points of the two
  *    edges both at vertices: rounded corners meet, one point along the line
- *    between the vertices (the face normal would overstate the overlap).
+ *    between the vertices (a face normal misstates the gap of rounded corners;
+ *    for sharp ones it is the true gap, useful to speculative contacts).
  * 4. Otherwise clip the incident edge to the reference face's slab (the core
  *    face, not widened by the radii: beyond it the rounded surface curves away)
  *    and keep the clipped points whose separation is below the speculative
  *    distance. An incident edge wholly outside the slab (a degenerate case, e.g.
  *    two collinear segments end to end, where the segments' face normals are not
  *    enough axes) falls back to step 3's closest points. */
-static tb_manifold collide_cores(const core* a, const core* b, tb_transform xfa) {
-  tb_manifold m = {0};
+static void collide_cores(local_manifold* m, const core* a, const core* b) {
   float limit = a->radius + b->radius + TB_SPECULATIVE_DISTANCE;
   int ea, eb;
   float sa = max_separation(a, b, limit, &ea);
-  if (!(sa < limit)) return m;
+  if (!(sa < limit)) return;
   float sb = max_separation(b, a, limit, &eb);
-  if (!(sb < limit)) return m;
+  if (!(sb < limit)) return;
 
   face_pair fp;
   fp.flip = sb > sa;
@@ -342,21 +371,23 @@ static tb_manifold collide_cores(const core* a, const core* b, tb_transform xfa)
   }
   fp.j2 = next_index(fp.j1, fp.inc->count);
 
+  /* slab of the reference face: u in [0, len] along its tangent */
   tb_vec2 r1 = fp.ref->v[fp.i1], r2 = fp.ref->v[fp.i2];
   tb_vec2 p[2] = {fp.inc->v[fp.j1], fp.inc->v[fp.j2]};
-  float fr, fi;
-  if (fp.s > TB_CORE_GAP_TOLERANCE) {
-    closest_fractions(r1, r2, p[0], p[1], &fr, &fi);
-    if ((fr == 0.0f || fr == 1.0f) && (fi == 0.0f || fi == 1.0f)) return closest_contact(&fp, fr, fi, xfa);
-  }
-
-  /* slab of the reference face: u in [0, len] along its tangent */
   tb_vec2 t = tb_left_perp(fp.n);
   float len = tb_dot(tb_sub(r2, r1), t);
   float u[2] = {tb_dot(tb_sub(p[0], r1), t), tb_dot(tb_sub(p[1], r1), t)};
-  if ((u[0] < 0.0f && u[1] < 0.0f) || (u[0] > len && u[1] > len)) {
+  bool outside = (u[0] < 0.0f && u[1] < 0.0f) || (u[0] > len && u[1] > len);
+  bool leaves = u[0] < 0.0f || u[0] > len || u[1] < 0.0f || u[1] > len;
+  /* with both incident vertices in the slab the nearer one faces the reference
+   * edge: only an incident edge that leaves the slab can meet it at a vertex */
+  if (outside || (leaves && fp.s > TB_CORE_GAP_TOLERANCE)) {
+    float fr, fi;
     closest_fractions(r1, r2, p[0], p[1], &fr, &fi);
-    return closest_contact(&fp, fr, fi, xfa);
+    if (outside || ((fr == 0.0f || fr == 1.0f) && (fi == 0.0f || fi == 1.0f))) {
+      closest_contact(m, &fp, fr, fi);
+      return;
+    }
   }
   float rr = fp.ref->radius, ri = fp.inc->radius;
   for (int k = 0; k < 2; ++k) {
@@ -375,58 +406,70 @@ static tb_manifold collide_cores(const core* a, const core* b, tb_transform xfa)
     float sep = sq - rr - ri;
     if (!(sep < TB_SPECULATIVE_DISTANCE)) continue;
     /* reference surface at q - sq n + rr n, incident surface at q - ri n */
-    tb_manifold_point* mp = &m.points[m.point_count++];
-    *mp = (tb_manifold_point){tb_mul_add(q, 0.5f * (rr - sq - ri), fp.n), sep, id};
+    add_point(m, tb_mul_add(q, 0.5f * (rr - sq - ri), fp.n), sep, id);
   }
-  if (m.point_count == 0) return m;
-  m.normal = fp.flip ? tb_neg(fp.n) : fp.n;
-  return to_world(m, xfa);
+  m->normal = fp.flip ? tb_neg(fp.n) : fp.n;
 }
 
 /* ------------------------------------------------------- public wrappers -- */
 
 tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_capsules")) return (tb_manifold){0};
-  tb_transform rel = relative_transform(xfa, xfb);
-  tb_vec2 va[2], na[2], vb[2], nb[2];
-  core ca = segment_core(a->center1, a->center2, a->radius, va, na);
-  core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
-  return collide_cores(&ca, &cb, xfa);
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_capsules")) {
+    tb_transform rel = relative_transform(xfa, xfb);
+    tb_vec2 va[2], na[2], vb[2], nb[2];
+    core ca = segment_core(a->center1, a->center2, a->radius, va, na);
+    core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
+    collide_cores(&m, &ca, &cb);
+  }
+  return to_world(&m, xfa);
 }
 
 tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
                                            tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_segment_and_capsule")) return (tb_manifold){0};
-  tb_transform rel = relative_transform(xfa, xfb);
-  tb_vec2 va[2], na[2], vb[2], nb[2];
-  core ca = segment_core(a->point1, a->point2, 0.0f, va, na);
-  core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
-  return collide_cores(&ca, &cb, xfa);
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_capsule")) {
+    tb_transform rel = relative_transform(xfa, xfb);
+    tb_vec2 va[2], na[2], vb[2], nb[2];
+    core ca = segment_core(a->point1, a->point2, 0.0f, va, na);
+    core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
+    collide_cores(&m, &ca, &cb);
+  }
+  return to_world(&m, xfa);
 }
 
 tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
                                            tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_segment_and_polygon")) return (tb_manifold){0};
-  tb_vec2 va[2], na[2], vb[TB_MAX_POLYGON_VERTICES], nb[TB_MAX_POLYGON_VERTICES];
-  core ca = segment_core(a->point1, a->point2, 0.0f, va, na);
-  core cb = moved_polygon(b, relative_transform(xfa, xfb), vb, nb);
-  return collide_cores(&ca, &cb, xfa);
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_polygon")) {
+    tb_vec2 va[2], na[2], vb[TB_MAX_POLYGON_VERTICES], nb[TB_MAX_POLYGON_VERTICES];
+    core ca = segment_core(a->point1, a->point2, 0.0f, va, na);
+    core cb = moved_polygon(b, relative_transform(xfa, xfb), vb, nb);
+    collide_cores(&m, &ca, &cb);
+  }
+  return to_world(&m, xfa);
 }
 
 tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
                                            tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_polygon_and_capsule")) return (tb_manifold){0};
-  tb_transform rel = relative_transform(xfa, xfb);
-  tb_vec2 vb[2], nb[2];
-  core ca = polygon_core(a);
-  core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
-  return collide_cores(&ca, &cb, xfa);
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_polygon_and_capsule")) {
+    tb_transform rel = relative_transform(xfa, xfb);
+    tb_vec2 vb[2], nb[2];
+    core ca = polygon_core(a);
+    core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
+    collide_cores(&m, &ca, &cb);
+  }
+  return to_world(&m, xfa);
 }
 
 tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_polygons")) return (tb_manifold){0};
-  tb_vec2 vb[TB_MAX_POLYGON_VERTICES], nb[TB_MAX_POLYGON_VERTICES];
-  core ca = polygon_core(a);
-  core cb = moved_polygon(b, relative_transform(xfa, xfb), vb, nb);
-  return collide_cores(&ca, &cb, xfa);
+  local_manifold m = {0};
+  if (args_ok(a, xfa, b, xfb, "tb_collide_polygons")) {
+    tb_vec2 vb[TB_MAX_POLYGON_VERTICES], nb[TB_MAX_POLYGON_VERTICES];
+    core ca = polygon_core(a);
+    core cb = moved_polygon(b, relative_transform(xfa, xfb), vb, nb);
+    collide_cores(&m, &ca, &cb);
+  }
+  return to_world(&m, xfa);
 }

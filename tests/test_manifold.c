@@ -429,7 +429,8 @@ static any_shape random_shape(unsigned* seed, tb_shape_type type) {
       break;
     }
     default: {
-      float scale = tbt_rand(seed, 0.1f, 1.5f), radius = tbt_rand(seed, 0.0f, 1.0f) < 0.5f ? 0.0f : tbt_rand(seed, 0.0f, 0.3f);
+      float scale = tbt_rand(seed, 0.1f, 1.5f),
+            radius = tbt_rand(seed, 0.0f, 1.0f) < 0.5f ? 0.0f : tbt_rand(seed, 0.0f, 0.3f);
       tb_vec2 c = {tbt_rand(seed, -0.5f, 0.5f), tbt_rand(seed, -0.5f, 0.5f)};
       for (;;) {
         tb_vec2 pts[8];
@@ -448,13 +449,13 @@ static any_shape random_shape(unsigned* seed, tb_shape_type type) {
 
 /* The pairs with a collide function, as (A type, B type). */
 static const tb_shape_type pair_types[9][2] = {
-    {TB_SHAPE_CIRCLE, TB_SHAPE_CIRCLE},    {TB_SHAPE_CAPSULE, TB_SHAPE_CIRCLE},  {TB_SHAPE_CAPSULE, TB_SHAPE_CAPSULE},
-    {TB_SHAPE_SEGMENT, TB_SHAPE_CIRCLE},   {TB_SHAPE_SEGMENT, TB_SHAPE_CAPSULE}, {TB_SHAPE_SEGMENT, TB_SHAPE_POLYGON},
-    {TB_SHAPE_POLYGON, TB_SHAPE_CIRCLE},   {TB_SHAPE_POLYGON, TB_SHAPE_CAPSULE}, {TB_SHAPE_POLYGON, TB_SHAPE_POLYGON},
+    {TB_SHAPE_CIRCLE, TB_SHAPE_CIRCLE},  {TB_SHAPE_CAPSULE, TB_SHAPE_CIRCLE},  {TB_SHAPE_CAPSULE, TB_SHAPE_CAPSULE},
+    {TB_SHAPE_SEGMENT, TB_SHAPE_CIRCLE}, {TB_SHAPE_SEGMENT, TB_SHAPE_CAPSULE}, {TB_SHAPE_SEGMENT, TB_SHAPE_POLYGON},
+    {TB_SHAPE_POLYGON, TB_SHAPE_CIRCLE}, {TB_SHAPE_POLYGON, TB_SHAPE_CAPSULE}, {TB_SHAPE_POLYGON, TB_SHAPE_POLYGON},
 };
-static const char* const pair_names[9] = {"circle-circle",   "capsule-circle", "capsule-capsule",
-                                          "segment-circle",  "segment-capsule", "segment-polygon",
-                                          "polygon-circle",  "polygon-capsule", "polygon-polygon"};
+static const char* const pair_names[9] = {"circle-circle",  "capsule-circle",  "capsule-capsule",
+                                          "segment-circle", "segment-capsule", "segment-polygon",
+                                          "polygon-circle", "polygon-capsule", "polygon-polygon"};
 
 static tb_manifold collide_any(const any_shape* a, tb_transform xa, const any_shape* b, tb_transform xb) {
   switch (a->type * 4 + b->type) {
@@ -472,8 +473,7 @@ static tb_manifold collide_any(const any_shape* a, tb_transform xa, const any_sh
       return tb_collide_polygon_and_circle(&a->g.polygon, xa, &b->g.circle, xb);
     case TB_SHAPE_POLYGON * 4 + TB_SHAPE_CAPSULE:
       return tb_collide_polygon_and_capsule(&a->g.polygon, xa, &b->g.capsule, xb);
-    case TB_SHAPE_POLYGON * 4 + TB_SHAPE_POLYGON:
-      return tb_collide_polygons(&a->g.polygon, xa, &b->g.polygon, xb);
+    case TB_SHAPE_POLYGON * 4 + TB_SHAPE_POLYGON: return tb_collide_polygons(&a->g.polygon, xa, &b->g.polygon, xb);
     default: ck_abort_msg("no collide function for types %d, %d", a->type, b->type);
   }
   return (tb_manifold){0};
@@ -621,8 +621,8 @@ START_TEST(random_configurations_are_sane_and_exact) {
       check_sane(&m);
       dcore ca = world_core(&a, xa), cb = world_core(&b, xb);
       double gap = core_distance(&ca, &cb) - ca.radius - cb.radius;
-      if (gap > SPEC + 1e-4) ck_assert_msg(m.point_count == 0, "%s #%d: gap %g but %d points", pair_names[p], k, gap,
-                                            m.point_count);
+      if (gap > SPEC + 1e-4)
+        ck_assert_msg(m.point_count == 0, "%s #%d: gap %g but %d points", pair_names[p], k, gap, m.point_count);
       if (gap < SPEC - 1e-4) ck_assert_msg(m.point_count > 0, "%s #%d: gap %g but no point", pair_names[p], k, gap);
       if (m.point_count == 0 || core_distance(&ca, &cb) < 1e-3) continue;
       /* cores apart: the smallest separation is the exact gap */
@@ -658,8 +658,9 @@ START_TEST(swapping_mirrors_the_manifold) {
                     s.normal.y);
       for (int i = 0; i < m.point_count; ++i) {
         int j = nearest_point(&s, m.points[i].point.x, m.points[i].point.y);
-        ck_assert_msg(hypot(s.points[j].point.x - m.points[i].point.x, s.points[j].point.y - m.points[i].point.y) < 1e-4,
-                      "%s #%d: point %d moved on swapping", pair_names[p], k, i);
+        ck_assert_msg(
+            hypot(s.points[j].point.x - m.points[i].point.x, s.points[j].point.y - m.points[i].point.y) < 1e-4,
+            "%s #%d: point %d moved on swapping", pair_names[p], k, i);
         ck_assert_near(s.points[j].separation, m.points[i].separation, 1e-4);
       }
     }

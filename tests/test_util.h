@@ -28,7 +28,8 @@
 tb_world_id tbt_world(float gx, float gy);
 /* A dynamic body at (x, y) with one box of half extents hx, hy and density 1. */
 tb_body_id tbt_box_body(tb_world_id w, float x, float y, float hx, float hy);
-/* Deterministic random numbers for tests (xorshift), uniform in [lo, hi). */
+/* Deterministic random numbers for tests (xorshift), uniform in [lo, hi]: float
+ * rounding can return hi itself, so do not cast to an index without clamping. */
 float tbt_rand(unsigned* state, float lo, float hi);
 
 #define TB_TEST_MAIN(suite_fn)                        \

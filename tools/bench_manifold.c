@@ -1,6 +1,6 @@
 /* Narrow-phase throughput: ns per contact manifold for every pair type, tumble
- * and Box2D 2.4.1 in the same run, on the same configurations. Not part of the
- * Makefile. Build (after `make lib`) and run from the repository root:
+ * and Box2D 2.4.1 in the same run, on the same configurations. `make bench`
+ * builds and runs it; by hand (after `make lib`, from the repository root):
  *
  *   cc -std=c17 -O2 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -Iinclude \
  *      -c tools/bench_manifold.c -o build/bench_manifold.o
@@ -156,23 +156,30 @@ static double make_configs(const pair_def* p) {
     touching += collide(&sa[i], xa[i], &sb[i], xb[i]).point_count > 0;
     ba[i] = (b2c_transform){xa[i].p.x, xa[i].p.y, xa[i].q.c, xa[i].q.s};
     bb[i] = (b2c_transform){xb[i].p.x, xb[i].p.y, xb[i].q.c, xb[i].q.s};
-    if (p->a == CIRCLE) fa[3 * i] = sa[i].circle.center.x, fa[3 * i + 1] = sa[i].circle.center.y, fa[3 * i + 2] = sa[i].circle.radius;
-    if (p->a == SEGMENT)
-      fa[4 * i] = sa[i].segment.point1.x, fa[4 * i + 1] = sa[i].segment.point1.y, fa[4 * i + 2] = sa[i].segment.point2.x,
-      fa[4 * i + 3] = sa[i].segment.point2.y;
+    if (p->a == CIRCLE) {
+      const tb_circle* c = &sa[i].circle;
+      memcpy(fa + 3 * i, (const float[3]){c->center.x, c->center.y, c->radius}, 3 * sizeof(float));
+    }
+    if (p->a == SEGMENT) {
+      const tb_segment* e = &sa[i].segment;
+      memcpy(fa + 4 * i, (const float[4]){e->point1.x, e->point1.y, e->point2.x, e->point2.y}, 4 * sizeof(float));
+    }
     if (p->a == POLYGON || p->a == BOX) pa[i] = to_b2c(&sa[i].polygon);
-    if (p->b == CIRCLE) fb[3 * i] = sb[i].circle.center.x, fb[3 * i + 1] = sb[i].circle.center.y, fb[3 * i + 2] = sb[i].circle.radius;
+    if (p->b == CIRCLE) {
+      const tb_circle* c = &sb[i].circle;
+      memcpy(fb + 3 * i, (const float[3]){c->center.x, c->center.y, c->radius}, 3 * sizeof(float));
+    }
     if (p->b == POLYGON || p->b == BOX) pb[i] = to_b2c(&sb[i].polygon);
   }
   return (double)touching / N;
 }
 
 /* One timed sweep calling fn directly (no dispatch in the loop). */
-#define SWEEP(fn, ga, gb)                                                     \
-  for (int r = 0; r < repeat; ++r)                                            \
-    for (int i = 0; i < N; ++i) {                                             \
-      tb_manifold m = fn(&sa[i].ga, xa[i], &sb[i].gb, xb[i]);                 \
-      sum += m.point_count + m.points[0].separation + m.points[0].point.x;    \
+#define SWEEP(fn, ga, gb)                                                  \
+  for (int r = 0; r < repeat; ++r)                                         \
+    for (int i = 0; i < N; ++i) {                                          \
+      tb_manifold m = fn(&sa[i].ga, xa[i], &sb[i].gb, xb[i]);              \
+      sum += m.point_count + m.points[0].separation + m.points[0].point.x; \
     }
 
 static double bench_tumble(const pair_def* p, int repeat, double* checksum) {

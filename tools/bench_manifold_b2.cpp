@@ -44,9 +44,8 @@ b2EdgeShape edge(const float* e) {
 
 // Times `repeat` sweeps of collide(i) over n configurations; ns per call.
 template <class Collide>
-double run(int n, int repeat, bool with_world, const std::vector<b2Transform>& xa,
-           const std::vector<b2Transform>& xb, const std::vector<float>& ra, const std::vector<float>& rb,
-           double* checksum, Collide collide) {
+double run(int n, int repeat, bool with_world, const std::vector<b2Transform>& xa, const std::vector<b2Transform>& xb,
+           const std::vector<float>& ra, const std::vector<float>& rb, double* checksum, Collide collide) {
   double sum = 0.0;
   auto start = std::chrono::steady_clock::now();
   for (int r = 0; r < repeat; ++r) {

@@ -37,13 +37,13 @@ enum { B2C_CIRCLES = 0, B2C_FACE_A = 1, B2C_FACE_B = 2 };
 
 typedef struct b2c_manifold {
   int point_count;
-  int type;               /* B2C_*: which shape held the reference face (with points only) */
-  float local_normal[2];  /* b2Manifold::localNormal (in the reference shape's frame) */
-  float local_point[2];   /* b2Manifold::localPoint */
-  float normal[2];        /* world, A to B */
-  float points[2][2];     /* world, midway */
-  float separations[2];   /* negative when overlapping */
-  uint32_t ids[2];        /* b2ContactID::key */
+  int type;              /* B2C_*: which shape held the reference face (with points only) */
+  float local_normal[2]; /* b2Manifold::localNormal (in the reference shape's frame) */
+  float local_point[2];  /* b2Manifold::localPoint */
+  float normal[2];       /* world, A to B */
+  float points[2][2];    /* world, midway */
+  float separations[2];  /* negative when overlapping */
+  uint32_t ids[2];       /* b2ContactID::key */
 } b2c_manifold;
 
 /* b2_polygonRadius: the skin of Box2D polygons and edges. */

@@ -81,9 +81,9 @@ enum {
   MISMATCH,
   CLASS_COUNT
 };
-static const char* const class_names[CLASS_COUNT] = {
-    "empty", "compared", "extra", "speculative", "near", "close", "tie", "hysteresis", "corner", "side",
-    "clipfail", "MISMATCH"};
+static const char* const class_names[CLASS_COUNT] = {"empty",  "compared", "extra",    "speculative",
+                                                     "near",   "close",    "tie",      "hysteresis",
+                                                     "corner", "side",     "clipfail", "MISMATCH"};
 
 typedef struct stats {
   const char* name;
@@ -342,10 +342,11 @@ static void compare(stats* s, int k, const b2c_manifold* b, const tb_manifold* t
   for (int j = 0; j < t->point_count; ++j)
     if (!used[j]) extra_ok = t->points[j].separation >= -FUZZ;
   if (en > 1e-4 || ep > 1e-3 || es > 1e-4 || !extra_ok) {
-    snprintf(why, sizeof why,
-             "normal (%.6f, %.6f) vs (%.6f, %.6f); point err %.2e, separation err %.2e; counts %d/%d; seps %.5f vs %.5f",
-             t->normal.x, t->normal.y, b->normal[0], b->normal[1], ep, es, t->point_count, b->point_count,
-             t->points[0].separation, b->separations[0]);
+    snprintf(
+        why, sizeof why,
+        "normal (%.6f, %.6f) vs (%.6f, %.6f); point err %.2e, separation err %.2e; counts %d/%d; seps %.5f vs %.5f",
+        t->normal.x, t->normal.y, b->normal[0], b->normal[1], ep, es, t->point_count, b->point_count,
+        t->points[0].separation, b->separations[0]);
     mismatch(s, k, why);
     return;
   }
