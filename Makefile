@@ -141,11 +141,13 @@ uninstall:
 	  $(DESTDIR)$(PREFIX)/lib/libtumble.so $(DESTDIR)$(PREFIX)/lib/libtumble.so.0 \
 	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc
 
+FORMATTED := include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp \
+  tests/reference/*.h demos/*.c tools/*.c tools/*.cpp
 format:
-	clang-format -i include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp tests/reference/*.h demos/*.c
+	clang-format -i $(FORMATTED)
 
 format-check:
-	clang-format --dry-run --Werror include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp tests/reference/*.h demos/*.c
+	clang-format --dry-run --Werror $(FORMATTED)
 
 clean:
 	rm -rf build

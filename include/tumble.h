@@ -56,10 +56,10 @@ typedef enum tb_result {
   TB_ERR_DEGENERATE_POLYGON, /* < 3 distinct points, collinear or near-zero area */
   TB_ERR_TOO_MANY_VERTICES,  /* more than TB_MAX_POLYGON_VERTICES hull points */
   TB_ERR_OUT_OF_MEMORY,
-  TB_ERR_CAPACITY,           /* a fixed limit (e.g. number of worlds) is reached */
-  TB_ERR_LOCKED,             /* called from inside tb_world_step (e.g. a callback) */
-  TB_ERR_WRONG_BODY_TYPE,    /* e.g. mass data on a static body */
-  TB_ERR_NUMERIC             /* a NaN appeared during the step and was contained */
+  TB_ERR_CAPACITY,        /* a fixed limit (e.g. number of worlds) is reached */
+  TB_ERR_LOCKED,          /* called from inside tb_world_step (e.g. a callback) */
+  TB_ERR_WRONG_BODY_TYPE, /* e.g. mass data on a static body */
+  TB_ERR_NUMERIC          /* a NaN appeared during the step and was contained */
 } tb_result;
 
 /* The short name of a result code, e.g. "TB_ERR_STALE_HANDLE". */
@@ -155,8 +155,7 @@ typedef struct tb_body_state {
 /* A force field f(t, body state) -> (force at the centre of mass, torque). It is
  * called for every awake dynamic body at each integrator stage, so it must be a
  * pure function of its arguments. It must not call back into the world. */
-typedef void tb_force_field_fn(double time, const tb_body_state* state, void* context,
-                               tb_vec2* force, float* torque);
+typedef void tb_force_field_fn(double time, const tb_body_state* state, void* context, tb_vec2* force, float* torque);
 
 /* Decides whether two shapes may collide, after the filter bits (optional). It is
  * called when the broad phase finds a new pair; it must not change the world. */
@@ -242,16 +241,16 @@ typedef enum tb_body_type {
 } tb_body_type;
 
 typedef struct tb_body_def {
-  tb_body_type type;         /* default static */
-  tb_vec2 position;          /* world position of the body origin */
-  float angle;               /* radians */
-  tb_vec2 linear_velocity;   /* of the body origin, m/s */
-  float angular_velocity;    /* rad/s */
-  float linear_damping;      /* >= 0, 1/s: v <- v / (1 + h c) per substep */
-  float angular_damping;     /* >= 0, 1/s */
-  float gravity_scale;       /* default 1 */
+  tb_body_type type;       /* default static */
+  tb_vec2 position;        /* world position of the body origin */
+  float angle;             /* radians */
+  tb_vec2 linear_velocity; /* of the body origin, m/s */
+  float angular_velocity;  /* rad/s */
+  float linear_damping;    /* >= 0, 1/s: v <- v / (1 + h c) per substep */
+  float angular_damping;   /* >= 0, 1/s */
+  float gravity_scale;     /* default 1 */
   bool fixed_rotation;
-  bool enabled;              /* default true */
+  bool enabled; /* default true */
   void* user_data;
 } tb_body_def;
 
@@ -576,8 +575,7 @@ typedef struct tb_ray_result {
 tb_result tb_world_cast_ray(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter,
                             tb_cast_fn* fn, void* context);
 /* The closest hit; .hit is false when there is none (or on error). */
-tb_ray_result tb_world_cast_ray_closest(tb_world_id world, tb_vec2 origin, tb_vec2 translation,
-                                        tb_query_filter filter);
+tb_ray_result tb_world_cast_ray_closest(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter);
 /* Every hit, nearest first: writes up to capacity into out and the number of hits
  * (which may exceed capacity) into *count. */
 tb_result tb_world_cast_ray_all(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter,

@@ -8,14 +8,14 @@
 #include "world.h"
 
 /* Resolve a body handle or return `fallback` from the calling function. */
-#define GET_BODY(id, fallback)                              \
-  tb_world* w = NULL;                                       \
-  tb_body* b = tb_body_get((id), &w, __func__);             \
-  if (b == NULL) return (fallback);                         \
+#define GET_BODY(id, fallback)                  \
+  tb_world* w = NULL;                           \
+  tb_body* b = tb_body_get((id), &w, __func__); \
+  if (b == NULL) return (fallback);             \
   (void)w
-#define GET_BODY_FOR_CHANGE(id)                             \
-  tb_world* w = NULL;                                       \
-  tb_body* b = tb_body_get_unlocked((id), &w, __func__);    \
+#define GET_BODY_FOR_CHANGE(id)                          \
+  tb_world* w = NULL;                                    \
+  tb_body* b = tb_body_get_unlocked((id), &w, __func__); \
   if (b == NULL) return tb_last_result()
 
 static const tb_vec2 zero2 = {0.0f, 0.0f};
@@ -88,8 +88,7 @@ static tb_result check_vector(tb_world* w, const char* fn, const char* name, tb_
 
 static tb_result check_value(tb_world* w, const char* fn, const char* name, float v) {
   if (!tb_value_ok(v))
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g is not finite or beyond TB_MAX_VALUE", fn, name,
-                   (double)v);
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g is not finite or beyond TB_MAX_VALUE", fn, name, (double)v);
   return TB_OK;
 }
 
@@ -102,8 +101,7 @@ static tb_result check_point(tb_world* w, const char* fn, const char* name, tb_v
 
 static tb_result check_angle(tb_world* w, const char* fn, float angle) {
   if (!isfinite(angle) || fabsf(angle) > 1.0e6f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: angle = %g must be finite and within 1e6 rad", fn,
-                   (double)angle);
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: angle = %g must be finite and within 1e6 rad", fn, (double)angle);
   return TB_OK;
 }
 
@@ -152,8 +150,7 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
 /* Shapes leave the broad phase (their contacts end) or join it again. */
 static void remove_proxies(tb_world* w, int body) {
   tb_contacts_destroy_of_body(w, body, -1);
-  for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next)
-    tb_broad_phase_destroy_proxy(w, s);
+  for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next) tb_broad_phase_destroy_proxy(w, s);
 }
 
 static bool add_proxies(tb_world* w, int body) {

@@ -118,8 +118,7 @@ static bool queue_move(tb_world* w, int shape_index) {
   tb_shape* s = tb_shape_at(w, shape_index);
   if (s->in_move_buffer) return true;
   tb_broad_phase* bp = &w->broad_phase;
-  if (!tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + 1, sizeof(int)))
-    return false;
+  if (!tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + 1, sizeof(int))) return false;
   bp->move_buffer[bp->move_count++] = shape_index;
   s->in_move_buffer = true;
   return true;

@@ -58,8 +58,7 @@ tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
       return null_id;
     }
     int j = i + 1 < n ? i + 1 : 0;
-    if ((j > 0 || def->is_loop) &&
-        tb_distance_sq(def->points[i], def->points[j]) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
+    if ((j > 0 || def->is_loop) && tb_distance_sq(def->points[i], def->points[j]) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
       tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->points[%d] and [%d] are closer than TB_LINEAR_SLOP", fn, i, j);
       return null_id;
     }

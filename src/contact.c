@@ -14,9 +14,9 @@
 
 typedef tb_manifold collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb);
 
-#define COLLIDE(name, fa, fb, call)                                                                \
+#define COLLIDE(name, fa, fb, call)                                                                   \
   static tb_manifold name(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb) { \
-    return call(&a->geom.fa, xfa, &b->geom.fb, xfb);                                               \
+    return call(&a->geom.fa, xfa, &b->geom.fb, xfb);                                                  \
   }
 COLLIDE(circles, circle, circle, tb_collide_circles)
 COLLIDE(capsule_circle, capsule, circle, tb_collide_capsule_and_circle)
@@ -39,12 +39,10 @@ static collide_fn* const collide_table[5][5] = {
     [TB_SHAPE_SEGMENT] = {[TB_SHAPE_CIRCLE] = segment_circle,
                           [TB_SHAPE_CAPSULE] = segment_capsule,
                           [TB_SHAPE_POLYGON] = segment_polygon},
-    [TB_SHAPE_POLYGON] = {[TB_SHAPE_CIRCLE] = polygon_circle,
-                          [TB_SHAPE_CAPSULE] = polygon_capsule,
-                          [TB_SHAPE_POLYGON] = polygons},
-    [TB_SHAPE_CHAIN_SEGMENT] = {[TB_SHAPE_CIRCLE] = chain_circle,
-                                [TB_SHAPE_CAPSULE] = chain_capsule,
-                                [TB_SHAPE_POLYGON] = chain_polygon},
+    [TB_SHAPE_POLYGON] =
+        {[TB_SHAPE_CIRCLE] = polygon_circle, [TB_SHAPE_CAPSULE] = polygon_capsule, [TB_SHAPE_POLYGON] = polygons},
+    [TB_SHAPE_CHAIN_SEGMENT] =
+        {[TB_SHAPE_CIRCLE] = chain_circle, [TB_SHAPE_CAPSULE] = chain_capsule, [TB_SHAPE_POLYGON] = chain_polygon},
 };
 
 bool tb_shape_types_collide(tb_shape_type a, tb_shape_type b) {
@@ -70,8 +68,10 @@ static void unlink_edge(tb_world* w, int contact, int side) {
   tb_contact* c = contact_at(w, contact);
   tb_contact_edge* e = &c->edges[side];
   tb_body* b = tb_body_at(w, e->body);
-  if (e->prev >= 0) contact_at(w, e->prev >> 1)->edges[e->prev & 1].next = e->next;
-  else b->contact_list = e->next;
+  if (e->prev >= 0)
+    contact_at(w, e->prev >> 1)->edges[e->prev & 1].next = e->next;
+  else
+    b->contact_list = e->next;
   if (e->next >= 0) contact_at(w, e->next >> 1)->edges[e->next & 1].prev = e->prev;
   b->contact_count -= 1;
 }
@@ -217,7 +217,7 @@ void tb_contacts_update(tb_world* w) {
       continue;
     }
     c->manifold = collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb,
-                                                   tb_body_at(w, sb->body)->transform);
+                                                    tb_body_at(w, sb->body)->transform);
     bool touching = c->manifold.point_count > 0;
     if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */
       touching = false;

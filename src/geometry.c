@@ -116,8 +116,7 @@ tb_mass_data tb_compute_polygon_mass(const tb_polygon* poly, float density) {
       double hx = nx + mx, hy = ny + my, hlen = sqrt(hx * hx + hy * hy);
       double m_sec = rho * 0.5 * phi * R * R;
       double dist = 4.0 * R * sin(0.5 * phi) / (3.0 * phi);
-      part sector = {m_sec, bx + dist * hx / hlen, by + dist * hy / hlen,
-                     m_sec * (0.5 * R * R - dist * dist)};
+      part sector = {m_sec, bx + dist * hx / hlen, by + dist * hy / hlen, m_sec * (0.5 * R * R - dist * dist)};
       total = part_add(total, sector);
     }
   }
@@ -194,7 +193,6 @@ tb_aabb tb_shape_geom_aabb(const tb_shape* s, tb_transform xf) {
   return (tb_aabb){{0, 0}, {0, 0}};
 }
 
-
 const char* tb_check_circle(const tb_circle* c) {
   if (!tb_point_ok(c->center)) return "circle center is not finite or beyond TB_MAX_LENGTH";
   if (!(c->radius > 0.0f) || !tb_length_ok(c->radius)) return "circle radius must be > 0, finite and <= TB_MAX_LENGTH";
@@ -211,7 +209,8 @@ const char* tb_check_capsule(const tb_capsule* c) {
 }
 
 const char* tb_check_segment(const tb_segment* s) {
-  if (!tb_point_ok(s->point1) || !tb_point_ok(s->point2)) return "segment points are not finite or beyond TB_MAX_LENGTH";
+  if (!tb_point_ok(s->point1) || !tb_point_ok(s->point2))
+    return "segment points are not finite or beyond TB_MAX_LENGTH";
   if (tb_distance_sq(s->point1, s->point2) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) return "segment points coincide";
   return NULL;
 }
@@ -220,7 +219,8 @@ const char* tb_check_segment(const tb_segment* s) {
  * 3..max vertices, finite, counter-clockwise and strictly convex, unit normals. */
 const char* tb_check_polygon(const tb_polygon* p) {
   if (p->count < 3 || p->count > TB_MAX_POLYGON_VERTICES) return "polygon count must be 3..TB_MAX_POLYGON_VERTICES";
-  if (!(p->radius >= 0.0f) || !tb_length_ok(p->radius)) return "polygon radius must be >= 0, finite and <= TB_MAX_LENGTH";
+  if (!(p->radius >= 0.0f) || !tb_length_ok(p->radius))
+    return "polygon radius must be >= 0, finite and <= TB_MAX_LENGTH";
   for (int i = 0; i < p->count; ++i) {
     if (!tb_point_ok(p->vertices[i])) return "polygon vertex is not finite or beyond TB_MAX_LENGTH";
     tb_vec2 a = p->vertices[i], b = p->vertices[(i + 1) % p->count], c = p->vertices[(i + 2) % p->count];

@@ -55,8 +55,8 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
     tb_vec2 p = points[i];
     if (!tb_point_ok(p))
       return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT,
-                     "tb_make_polygon: points[%d] = (%g, %g) is not finite or beyond TB_MAX_LENGTH", i,
-                     (double)p.x, (double)p.y);
+                     "tb_make_polygon: points[%d] = (%g, %g) is not finite or beyond TB_MAX_LENGTH", i, (double)p.x,
+                     (double)p.y);
   }
 
   /* the points, then room for both chains (up to 2n entries) */
@@ -67,8 +67,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
   int n = 0; /* weld near-duplicates */
   for (int i = 0; i < count; ++i) {
     bool unique = true;
-    for (int j = 0; j < n && unique; ++j)
-      unique = tb_distance_sq(points[i], pts[j]) >= TB_LINEAR_SLOP * TB_LINEAR_SLOP;
+    for (int j = 0; j < n && unique; ++j) unique = tb_distance_sq(points[i], pts[j]) >= TB_LINEAR_SLOP * TB_LINEAR_SLOP;
     if (unique) pts[n++] = points[i];
   }
   if (n < 3) {
@@ -126,8 +125,10 @@ static bool half_extent_ok(float h) { return h > 0.0f && tb_length_ok(h); }
 
 tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb_polygon* out) {
   if (out == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_make_box: out is NULL");
-  if (!half_extent_ok(hx)) return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: hx = %g must be > 0 and finite", (double)hx);
-  if (!half_extent_ok(hy)) return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: hy = %g must be > 0 and finite", (double)hy);
+  if (!half_extent_ok(hx))
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: hx = %g must be > 0 and finite", (double)hx);
+  if (!half_extent_ok(hy))
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: hy = %g must be > 0 and finite", (double)hy);
   if (!tb_point_ok(center))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: center is not finite or beyond TB_MAX_LENGTH");
   if (!isfinite(angle)) return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: angle is not finite");
@@ -150,7 +151,8 @@ tb_result tb_make_box(float hx, float hy, tb_polygon* out) {
 
 tb_result tb_make_rounded_box(float hx, float hy, float radius, tb_polygon* out) {
   if (radius < 0.0f || !tb_length_ok(radius))
-    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_rounded_box: radius %g must be >= 0 and finite", (double)radius);
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_rounded_box: radius %g must be >= 0 and finite",
+                   (double)radius);
   tb_result r = tb_make_box(hx, hy, out);
   if (r == TB_OK) out->radius = radius;
   return r;

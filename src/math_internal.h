@@ -13,9 +13,7 @@ static inline tb_vec2 tb_sub(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x - b.x,
 static inline tb_vec2 tb_neg(tb_vec2 a) { return (tb_vec2){-a.x, -a.y}; }
 static inline tb_vec2 tb_scale(float s, tb_vec2 a) { return (tb_vec2){s * a.x, s * a.y}; }
 /* a + s b */
-static inline tb_vec2 tb_mul_add(tb_vec2 a, float s, tb_vec2 b) {
-  return (tb_vec2){a.x + s * b.x, a.y + s * b.y};
-}
+static inline tb_vec2 tb_mul_add(tb_vec2 a, float s, tb_vec2 b) { return (tb_vec2){a.x + s * b.x, a.y + s * b.y}; }
 static inline float tb_dot(tb_vec2 a, tb_vec2 b) { return a.x * b.x + a.y * b.y; }
 /* 2D cross product a x b: the z of the 3D cross product. */
 static inline float tb_cross(tb_vec2 a, tb_vec2 b) { return a.x * b.y - a.y * b.x; }
@@ -28,12 +26,8 @@ static inline tb_vec2 tb_right_perp(tb_vec2 v) { return (tb_vec2){v.y, -v.x}; }
 static inline float tb_length_sq(tb_vec2 v) { return v.x * v.x + v.y * v.y; }
 static inline float tb_length(tb_vec2 v) { return sqrtf(v.x * v.x + v.y * v.y); }
 static inline float tb_distance_sq(tb_vec2 a, tb_vec2 b) { return tb_length_sq(tb_sub(a, b)); }
-static inline tb_vec2 tb_vmin(tb_vec2 a, tb_vec2 b) {
-  return (tb_vec2){a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y};
-}
-static inline tb_vec2 tb_vmax(tb_vec2 a, tb_vec2 b) {
-  return (tb_vec2){a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y};
-}
+static inline tb_vec2 tb_vmin(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y}; }
+static inline tb_vec2 tb_vmax(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y}; }
 static inline tb_vec2 tb_lerp(tb_vec2 a, tb_vec2 b, float t) {
   return (tb_vec2){a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
 }
@@ -55,17 +49,11 @@ static inline bool tb_value_ok(float a) { return isfinite(a) && fabsf(a) <= TB_M
 static inline bool tb_vector_ok(tb_vec2 v) { return tb_value_ok(v.x) && tb_value_ok(v.y); }
 
 static inline tb_rot tb_make_rot(float angle) { return (tb_rot){cosf(angle), sinf(angle)}; }
-static inline tb_vec2 tb_rotate(tb_rot q, tb_vec2 v) {
-  return (tb_vec2){q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
-}
+static inline tb_vec2 tb_rotate(tb_rot q, tb_vec2 v) { return (tb_vec2){q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; }
 static inline tb_vec2 tb_inv_rotate(tb_rot q, tb_vec2 v) {
   return (tb_vec2){q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
 }
-static inline tb_vec2 tb_transform_point(tb_transform t, tb_vec2 p) {
-  return tb_add(t.p, tb_rotate(t.q, p));
-}
-static inline tb_vec2 tb_inv_transform_point(tb_transform t, tb_vec2 p) {
-  return tb_inv_rotate(t.q, tb_sub(p, t.p));
-}
+static inline tb_vec2 tb_transform_point(tb_transform t, tb_vec2 p) { return tb_add(t.p, tb_rotate(t.q, p)); }
+static inline tb_vec2 tb_inv_transform_point(tb_transform t, tb_vec2 p) { return tb_inv_rotate(t.q, tb_sub(p, t.p)); }
 
 #endif

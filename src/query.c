@@ -90,8 +90,8 @@ static void cast_ray(tb_world* w, tb_vec2 origin, tb_vec2 translation, ray_conte
   }
 }
 
-tb_result tb_world_cast_ray(tb_world_id id, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter,
-                            tb_cast_fn* fn, void* context) {
+tb_result tb_world_cast_ray(tb_world_id id, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter, tb_cast_fn* fn,
+                            void* context) {
   const char* name = "tb_world_cast_ray";
   tb_world* w = tb_world_get(id, name);
   if (w == NULL) return tb_last_result();
@@ -109,8 +109,7 @@ static float closest_callback(tb_shape_id shape, tb_vec2 point, tb_vec2 normal, 
   return fraction;
 }
 
-tb_ray_result tb_world_cast_ray_closest(tb_world_id id, tb_vec2 origin, tb_vec2 translation,
-                                        tb_query_filter filter) {
+tb_ray_result tb_world_cast_ray_closest(tb_world_id id, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter) {
   const char* name = "tb_world_cast_ray_closest";
   tb_ray_result best = {{0, 0, 0}, {0.0f, 0.0f}, {0.0f, 0.0f}, 1.0f, false};
   tb_world* w = tb_world_get(id, name);
@@ -226,8 +225,7 @@ tb_result tb_world_overlap_aabb(tb_world_id id, tb_aabb aabb, tb_query_filter fi
   const char* name = "tb_world_overlap_aabb";
   tb_world* w = tb_world_get(id, name);
   if (w == NULL) return tb_last_result();
-  if (!aabb_ok(aabb))
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: aabb is not finite or has lower > upper", name);
+  if (!aabb_ok(aabb)) return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: aabb is not finite or has lower > upper", name);
   tb_result r = check_callback(w, name, fn != NULL);
   if (r != TB_OK) return r;
   overlap_context oc = {w, filter, OVERLAP_AABB, aabb, {0, 0}, NULL, {{0, 0}, {1, 0}}, fn, context, false};
@@ -283,8 +281,8 @@ tb_result tb_world_overlap_shape(tb_world_id id, const tb_shape_proxy* proxy, tb
   tb_result r = check_proxy(w, name, proxy, transform);
   if (r == TB_OK) r = check_callback(w, name, fn != NULL);
   if (r != TB_OK) return r;
-  overlap_context oc = {w, filter, OVERLAP_SHAPE, proxy_aabb(proxy, transform), {0, 0}, proxy, transform,
-                        fn,  context, false};
+  overlap_context oc = {w,  filter,  OVERLAP_SHAPE, proxy_aabb(proxy, transform), {0, 0}, proxy, transform,
+                        fn, context, false};
   return overlap(w, &oc);
 }
 
@@ -323,8 +321,8 @@ static bool shape_cast_callback(int32_t proxy, int32_t shape, void* context) {
   return true;
 }
 
-tb_result tb_world_cast_shape(tb_world_id id, const tb_shape_proxy* proxy, tb_transform transform,
-                              tb_vec2 translation, tb_query_filter filter, tb_cast_fn* fn, void* context) {
+tb_result tb_world_cast_shape(tb_world_id id, const tb_shape_proxy* proxy, tb_transform transform, tb_vec2 translation,
+                              tb_query_filter filter, tb_cast_fn* fn, void* context) {
   const char* name = "tb_world_cast_shape";
   tb_world* w = tb_world_get(id, name);
   if (w == NULL) return tb_last_result();

@@ -7,13 +7,13 @@
 #include "math_internal.h"
 #include "world.h"
 
-#define GET_SHAPE(id, fallback)                  \
-  tb_world* w = NULL;                            \
+#define GET_SHAPE(id, fallback)                   \
+  tb_world* w = NULL;                             \
   tb_shape* s = tb_shape_get((id), &w, __func__); \
-  if (s == NULL) return (fallback);              \
+  if (s == NULL) return (fallback);               \
   (void)w
-#define GET_SHAPE_FOR_CHANGE(id)                          \
-  tb_world* w = NULL;                                     \
+#define GET_SHAPE_FOR_CHANGE(id)                           \
+  tb_world* w = NULL;                                      \
   tb_shape* s = tb_shape_get_unlocked((id), &w, __func__); \
   if (s == NULL) return tb_last_result()
 
@@ -62,10 +62,22 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
                     .chain = -1,
                     .user_data = def->user_data};
   switch (type) {
-    case TB_SHAPE_CIRCLE: proto.geom.circle = *(const tb_circle*)geom; problem = tb_check_circle(geom); break;
-    case TB_SHAPE_CAPSULE: proto.geom.capsule = *(const tb_capsule*)geom; problem = tb_check_capsule(geom); break;
-    case TB_SHAPE_SEGMENT: proto.geom.segment = *(const tb_segment*)geom; problem = tb_check_segment(geom); break;
-    case TB_SHAPE_POLYGON: proto.geom.polygon = *(const tb_polygon*)geom; problem = tb_check_polygon(geom); break;
+    case TB_SHAPE_CIRCLE:
+      proto.geom.circle = *(const tb_circle*)geom;
+      problem = tb_check_circle(geom);
+      break;
+    case TB_SHAPE_CAPSULE:
+      proto.geom.capsule = *(const tb_capsule*)geom;
+      problem = tb_check_capsule(geom);
+      break;
+    case TB_SHAPE_SEGMENT:
+      proto.geom.segment = *(const tb_segment*)geom;
+      problem = tb_check_segment(geom);
+      break;
+    case TB_SHAPE_POLYGON:
+      proto.geom.polygon = *(const tb_polygon*)geom;
+      problem = tb_check_polygon(geom);
+      break;
     case TB_SHAPE_CHAIN_SEGMENT: problem = "chain segments are made by tb_create_chain"; break;
   }
   if (problem != NULL) {
@@ -113,8 +125,10 @@ void tb_shape_detach(tb_world* w, int index) {
   tb_body* b = tb_body_at(w, s->body);
   tb_contacts_destroy_of_body(w, s->body, index);
   tb_broad_phase_destroy_proxy(w, index);
-  if (s->prev >= 0) tb_shape_at(w, s->prev)->next = s->next;
-  else b->shape_list = s->next;
+  if (s->prev >= 0)
+    tb_shape_at(w, s->prev)->next = s->next;
+  else
+    b->shape_list = s->next;
   if (s->next >= 0) tb_shape_at(w, s->next)->prev = s->prev;
   b->shape_count -= 1;
   tb_pool_release(&w->shapes, index);
@@ -260,10 +274,18 @@ static tb_result get_geometry(tb_shape_id id, tb_shape_type type, void* out, con
   return TB_OK;
 }
 
-tb_result tb_shape_get_circle(tb_shape_id id, tb_circle* out) { return get_geometry(id, TB_SHAPE_CIRCLE, out, __func__); }
-tb_result tb_shape_get_capsule(tb_shape_id id, tb_capsule* out) { return get_geometry(id, TB_SHAPE_CAPSULE, out, __func__); }
-tb_result tb_shape_get_segment(tb_shape_id id, tb_segment* out) { return get_geometry(id, TB_SHAPE_SEGMENT, out, __func__); }
-tb_result tb_shape_get_polygon(tb_shape_id id, tb_polygon* out) { return get_geometry(id, TB_SHAPE_POLYGON, out, __func__); }
+tb_result tb_shape_get_circle(tb_shape_id id, tb_circle* out) {
+  return get_geometry(id, TB_SHAPE_CIRCLE, out, __func__);
+}
+tb_result tb_shape_get_capsule(tb_shape_id id, tb_capsule* out) {
+  return get_geometry(id, TB_SHAPE_CAPSULE, out, __func__);
+}
+tb_result tb_shape_get_segment(tb_shape_id id, tb_segment* out) {
+  return get_geometry(id, TB_SHAPE_SEGMENT, out, __func__);
+}
+tb_result tb_shape_get_polygon(tb_shape_id id, tb_polygon* out) {
+  return get_geometry(id, TB_SHAPE_POLYGON, out, __func__);
+}
 tb_result tb_shape_get_chain_segment(tb_shape_id id, tb_chain_segment* out) {
   return get_geometry(id, TB_SHAPE_CHAIN_SEGMENT, out, __func__);
 }

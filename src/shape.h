@@ -20,11 +20,11 @@ typedef struct tb_shape {
   bool sensor;
   bool enable_sensor_events, enable_contact_events, enable_hit_events, enable_pre_solve_events;
   /* broad phase */
-  int proxy;        /* leaf in the tree of its body type, -1 when not in a tree */
-  int tree;         /* which tree: the body type when the proxy was made */
+  int proxy; /* leaf in the tree of its body type, -1 when not in a tree */
+  int tree;  /* which tree: the body type when the proxy was made */
   bool in_move_buffer;
-  tb_aabb aabb;     /* tight, at the body's current transform */
-  int chain;        /* the chain this segment belongs to, -1 for other shapes */
+  tb_aabb aabb; /* tight, at the body's current transform */
+  int chain;    /* the chain this segment belongs to, -1 for other shapes */
   void* user_data;
 } tb_shape;
 

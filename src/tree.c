@@ -219,15 +219,15 @@ static void rotate_area(tb_tree_node* n, int32_t a, int32_t b, int32_t c) {
     int hd = n[d].height, he = n[e].height, hf = n[f].height, hg = n[g].height;
     float pbc = half_perimeter(n[b].aabb) + half_perimeter(n[c].aabb);
     if (swap_allowed(ha, 1 + max_i(hf, he), 1 + max_i(hd, hg), hf, he, hd, hg))
-      consider(&best,
-               pbc - half_perimeter(aabb_union(n[f].aabb, n[e].aabb)) -
-                   half_perimeter(aabb_union(n[d].aabb, n[g].aabb)),
-               d, f);
+      consider(
+          &best,
+          pbc - half_perimeter(aabb_union(n[f].aabb, n[e].aabb)) - half_perimeter(aabb_union(n[d].aabb, n[g].aabb)), d,
+          f);
     if (swap_allowed(ha, 1 + max_i(hg, he), 1 + max_i(hf, hd), hg, he, hf, hd))
-      consider(&best,
-               pbc - half_perimeter(aabb_union(n[g].aabb, n[e].aabb)) -
-                   half_perimeter(aabb_union(n[f].aabb, n[d].aabb)),
-               d, g);
+      consider(
+          &best,
+          pbc - half_perimeter(aabb_union(n[g].aabb, n[e].aabb)) - half_perimeter(aabb_union(n[f].aabb, n[d].aabb)), d,
+          g);
   }
   if (best.x == TB_TREE_NULL) return;
   int32_t px = n[best.x].parent, py = n[best.y].parent;
@@ -725,7 +725,8 @@ bool tb_tree_validate(const tb_tree* tree) {
   while (ok && stack.count > 0) {
     int32_t i = stack.items[--stack.count];
     const tb_tree_node* a = &n[i];
-    if (++reached > tree->node_count) ok = false;
+    if (++reached > tree->node_count)
+      ok = false;
     else if (a->height == 0) {
       leaves += 1;
       ok = a->child1 == TB_TREE_NULL && a->child2 == TB_TREE_NULL && tb_vec_finite(a->aabb.lower) &&

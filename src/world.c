@@ -107,11 +107,12 @@ tb_world* tb_world_get_unlocked(tb_world_id id, const char* fn) {
  * fn == NULL resolves quietly (for the *_is_valid queries). */
 typedef enum handle_kind { BODY, SHAPE, CHAIN } handle_kind;
 
-static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, handle_kind kind, tb_world** out,
-                     const char* fn, bool unlocked) {
+static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, handle_kind kind, tb_world** out, const char* fn,
+                     bool unlocked) {
   const char* what = kind == SHAPE ? "shape" : kind == CHAIN ? "chain" : "body";
   if (index1 <= 0 || world0 >= TB_MAX_WORLDS || worlds[world0] == NULL) {
-    if (fn != NULL) tb_fail(NULL, TB_ERR_STALE_HANDLE, "%s: the %s handle is null, or its world was destroyed", fn, what);
+    if (fn != NULL)
+      tb_fail(NULL, TB_ERR_STALE_HANDLE, "%s: the %s handle is null, or its world was destroyed", fn, what);
     return NULL;
   }
   tb_world* w = worlds[world0];
@@ -334,13 +335,19 @@ static void hash_shape(hasher* s, const tb_shape* sh) {
   hash_int(s, sh->filter.group_index);
   hash_int(s, sh->sensor);
   switch (sh->type) {
-    case TB_SHAPE_CIRCLE: hash_vec(s, sh->geom.circle.center); hash_float(s, sh->geom.circle.radius); break;
+    case TB_SHAPE_CIRCLE:
+      hash_vec(s, sh->geom.circle.center);
+      hash_float(s, sh->geom.circle.radius);
+      break;
     case TB_SHAPE_CAPSULE:
       hash_vec(s, sh->geom.capsule.center1);
       hash_vec(s, sh->geom.capsule.center2);
       hash_float(s, sh->geom.capsule.radius);
       break;
-    case TB_SHAPE_SEGMENT: hash_vec(s, sh->geom.segment.point1); hash_vec(s, sh->geom.segment.point2); break;
+    case TB_SHAPE_SEGMENT:
+      hash_vec(s, sh->geom.segment.point1);
+      hash_vec(s, sh->geom.segment.point2);
+      break;
     case TB_SHAPE_CHAIN_SEGMENT:
       hash_vec(s, sh->geom.chain_segment.ghost1);
       hash_vec(s, sh->geom.chain_segment.segment.point1);

@@ -31,15 +31,15 @@ static void teardown(void) { tb_destroy_world(W); }
 
 /* Evaluate a call that must be rejected with `code`, name `word` in its
  * message, and leave the world as it was. */
-#define REJECT(call, code, word)                                                                  \
-  do {                                                                                            \
-    tb_clear_error();                                                                             \
-    (void)(call);                                                                                 \
-    ck_assert_msg(tb_last_result() == (code), "%s: got %s, want %s (%s)", #call,                  \
-                  tb_result_name(tb_last_result()), tb_result_name(code), tb_last_error());       \
-    ck_assert_msg(strstr(tb_last_error(), (word)) != NULL, "%s: message '%s' lacks '%s'", #call, \
-                  tb_last_error(), (word));                                                       \
-    ck_assert_msg(tb_world_hash(W) == HASH, "%s changed the world", #call);                       \
+#define REJECT(call, code, word)                                                                                   \
+  do {                                                                                                             \
+    tb_clear_error();                                                                                              \
+    (void)(call);                                                                                                  \
+    ck_assert_msg(tb_last_result() == (code), "%s: got %s, want %s (%s)", #call, tb_result_name(tb_last_result()), \
+                  tb_result_name(code), tb_last_error());                                                          \
+    ck_assert_msg(strstr(tb_last_error(), (word)) != NULL, "%s: message '%s' lacks '%s'", #call, tb_last_error(),  \
+                  (word));                                                                                         \
+    ck_assert_msg(tb_world_hash(W) == HASH, "%s changed the world", #call);                                        \
   } while (0)
 
 static const float bad_reals[] = {NAN, INFINITY, -INFINITY, 1e30f, -1e30f};

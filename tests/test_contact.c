@@ -224,7 +224,7 @@ START_TEST(sensor_events) {
   sd = tb_default_shape_def();
   tb_body_id ball = make_body(w, TB_DYNAMIC_BODY, -3.0f, 0.0f);
   tb_shape_id ball_shape = add_circle(ball, &sd, 0.25f);
-  sd.enable_sensor_events = false; /* this one is invisible to sensors */
+  sd.enable_sensor_events = false;                               /* this one is invisible to sensors */
   tb_body_id ghost = make_body(w, TB_DYNAMIC_BODY, -3.0f, 0.9f); /* clear of the ball */
   add_circle(ghost, &sd, 0.25f);
   tb_body_set_linear_velocity(ball, (tb_vec2){3.0f, 0.0f});
@@ -351,8 +351,8 @@ START_TEST(touching_pairs_match_brute_force) {
     }
     tb_world_step(w, 1.0f / 60.0f, 4);
     int touching = tb_world_get_counts(w).touching_count;
-    ck_assert_msg(touching >= must && touching <= may, "step %d: %d touching, brute force %d..%d", step, touching,
-                  must, may);
+    ck_assert_msg(touching >= must && touching <= may, "step %d: %d touching, brute force %d..%d", step, touching, must,
+                  may);
     checked += 1;
     if (touching > max_touching) max_touching = touching;
   }

@@ -77,8 +77,8 @@ START_TEST(capsule) {
   tb_capsule cap = {{-1.0f, 0.0f}, {1.0f, 0.0f}, 0.3f};
   tb_mass_data md = tb_compute_capsule_mass(&cap, 1.0f);
   double m_rect = 2.0 * r * L, m_disc = PI * r * r;
-  double inertia = m_rect * (L * L + 4.0 * r * r) / 12.0 + m_disc * (L * L / 4.0 + r * r / 2.0) +
-                   m_disc * L * 4.0 * r / (3.0 * PI);
+  double inertia =
+      m_rect * (L * L + 4.0 * r * r) / 12.0 + m_disc * (L * L / 4.0 + r * r / 2.0) + m_disc * L * 4.0 * r / (3.0 * PI);
   ck_assert_rel(md.mass, m_rect + m_disc, TOL);
   ck_assert_rel(md.rotational_inertia, inertia, TOL);
   /* a tilted, offset capsule has the same mass properties about its centre */
@@ -116,8 +116,7 @@ END_TEST
 START_TEST(rounded_triangle_area) {
   const double R = 1.0, r = 0.25;
   tb_vec2 pts[3];
-  for (int i = 0; i < 3; ++i)
-    pts[i] = (tb_vec2){(float)(R * cos(2 * PI * i / 3)), (float)(R * sin(2 * PI * i / 3))};
+  for (int i = 0; i < 3; ++i) pts[i] = (tb_vec2){(float)(R * cos(2 * PI * i / 3)), (float)(R * sin(2 * PI * i / 3))};
   tb_polygon p;
   ck_assert_int_eq(tb_make_polygon(pts, 3, (float)r, &p), TB_OK);
   tb_mass_data md = tb_compute_polygon_mass(&p, 1.0f);

@@ -250,8 +250,7 @@ START_TEST(bad_queries) {
   ck_assert_ptr_nonnull(strstr(tb_last_error(), "origin"));
   ck_assert_int_eq(tb_world_cast_ray(w, (tb_vec2){0, 0}, (tb_vec2){0, 0}, f, clip, &n), TB_ERR_INVALID_ARGUMENT);
   ck_assert_ptr_nonnull(strstr(tb_last_error(), "zero"));
-  ck_assert_int_eq(tb_world_cast_ray(w, (tb_vec2){0, 0}, (tb_vec2){INFINITY, 0}, f, clip, &n),
-                   TB_ERR_INVALID_ARGUMENT);
+  ck_assert_int_eq(tb_world_cast_ray(w, (tb_vec2){0, 0}, (tb_vec2){INFINITY, 0}, f, clip, &n), TB_ERR_INVALID_ARGUMENT);
   ck_assert_int_eq(tb_world_cast_ray(w, (tb_vec2){0, 0}, (tb_vec2){1, 0}, f, NULL, NULL), TB_ERR_NULL_ARGUMENT);
   ck_assert(!tb_world_cast_ray_closest(w, (tb_vec2){0, NAN}, (tb_vec2){1, 0}, f).hit);
   ck_assert_int_eq(tb_world_cast_ray_all(w, (tb_vec2){0, 0}, (tb_vec2){1, 0}, f, NULL, 4, &n), TB_ERR_INVALID_ARGUMENT);

@@ -104,8 +104,10 @@ static tb_tree_ray_input random_ray(unsigned* rng) {
   ray.translation = (tb_vec2){len * cosf(angle), len * sinf(angle)};
   /* some axis-aligned rays exercise the parallel-slab path */
   float pick = tbt_rand(rng, 0.0f, 1.0f);
-  if (pick < 0.1f) ray.translation.x = 0.0f;
-  else if (pick < 0.2f) ray.translation.y = 0.0f;
+  if (pick < 0.1f)
+    ray.translation.x = 0.0f;
+  else if (pick < 0.2f)
+    ray.translation.y = 0.0f;
   ray.max_fraction = tbt_rand(rng, 0.2f, 1.0f);
   return ray;
 }
@@ -195,8 +197,8 @@ static void check_height(const tb_tree* tree, const char* what) {
   }
   ck_assert_msg(unbalanced == 0, "%s: %d nodes with children heights more than one apart", what, unbalanced);
   ck_assert_msg(h <= log_height_bound(n), "%s: height %d > ceil(2 log2 %d) = %d", what, h, n, log_height_bound(n));
-  ck_assert_msg(h <= avl_height_bound(n), "%s: height %d > AVL bound %d for %d proxies", what, h,
-                avl_height_bound(n), n);
+  ck_assert_msg(h <= avl_height_bound(n), "%s: height %d > AVL bound %d for %d proxies", what, h, avl_height_bound(n),
+                n);
   ck_assert_int_ge(h, (int)ceil(log2((double)n))); /* no binary tree does better */
 }
 
@@ -451,8 +453,7 @@ START_TEST(height_bounds) {
   tb_tree_destroy(&tree);
   /* sorted: right to left, overlapping neighbours */
   ck_assert_int_eq(tb_tree_create(&tree, MARGIN), TB_OK);
-  for (int i = 0; i < N_PROXIES; ++i)
-    tb_tree_create_proxy(&tree, box_at(-0.1f * (float)i, 0.0f, 0.5f, 0.5f), 1u, i);
+  for (int i = 0; i < N_PROXIES; ++i) tb_tree_create_proxy(&tree, box_at(-0.1f * (float)i, 0.0f, 0.5f, 0.5f), 1u, i);
   check_height(&tree, "sorted overlapping line");
   tb_tree_destroy(&tree);
   /* sorted: a grid, row by row */

@@ -10,18 +10,18 @@
 
 /* |a - b| <= tol * max(|b|, floor): a relative error with an absolute floor. */
 #define ck_assert_rel(a, b, tol) ck_assert_rel_floor((a), (b), (tol), 1e-30)
-#define ck_assert_rel_floor(a, b, tol, floor)                                                          \
-  do {                                                                                                 \
-    double a_ = (double)(a), b_ = (double)(b), t_ = (double)(tol);                                     \
-    double s_ = fabs(b_) > (floor) ? fabs(b_) : (floor);                                               \
+#define ck_assert_rel_floor(a, b, tol, floor)                                                                          \
+  do {                                                                                                                 \
+    double a_ = (double)(a), b_ = (double)(b), t_ = (double)(tol);                                                     \
+    double s_ = fabs(b_) > (floor) ? fabs(b_) : (floor);                                                               \
     ck_assert_msg(isfinite(a_) && fabs(a_ - b_) <= t_ * s_, "%s = %.9g, expected %s = %.9g (rel %.3g > %.3g)", #a, a_, \
-                  #b, b_, fabs(a_ - b_) / s_, t_);                                                     \
+                  #b, b_, fabs(a_ - b_) / s_, t_);                                                                     \
   } while (0)
-#define ck_assert_near(a, b, tol)                                                                        \
-  do {                                                                                                   \
-    double a_ = (double)(a), b_ = (double)(b), t_ = (double)(tol);                                       \
-    ck_assert_msg(isfinite(a_) && fabs(a_ - b_) <= t_, "%s = %.9g, expected %s = %.9g (|diff| %.3g > %.3g)", #a, a_, #b, \
-                  b_, fabs(a_ - b_), t_);                                                                \
+#define ck_assert_near(a, b, tol)                                                                                    \
+  do {                                                                                                               \
+    double a_ = (double)(a), b_ = (double)(b), t_ = (double)(tol);                                                   \
+    ck_assert_msg(isfinite(a_) && fabs(a_ - b_) <= t_, "%s = %.9g, expected %s = %.9g (|diff| %.3g > %.3g)", #a, a_, \
+                  #b, b_, fabs(a_ - b_), t_);                                                                        \
   } while (0)
 
 /* A world with default settings but the given gravity. */
@@ -32,13 +32,13 @@ tb_body_id tbt_box_body(tb_world_id w, float x, float y, float hx, float hy);
  * rounding can return hi itself, so do not cast to an index without clamping. */
 float tbt_rand(unsigned* state, float lo, float hi);
 
-#define TB_TEST_MAIN(suite_fn)                        \
-  int main(void) {                                    \
-    SRunner* sr = srunner_create(suite_fn());         \
-    srunner_run_all(sr, CK_NORMAL);                   \
-    int failed = srunner_ntests_failed(sr);           \
-    srunner_free(sr);                                 \
-    return failed == 0 ? 0 : 1;                       \
+#define TB_TEST_MAIN(suite_fn)                \
+  int main(void) {                            \
+    SRunner* sr = srunner_create(suite_fn()); \
+    srunner_run_all(sr, CK_NORMAL);           \
+    int failed = srunner_ntests_failed(sr);   \
+    srunner_free(sr);                         \
+    return failed == 0 ? 0 : 1;               \
   }
 
 #endif

@@ -1,7 +1,8 @@
 /* Micro benchmark of the dynamic AABB tree (src/tree.c), the broad phase's hot path.
  *
  * Build and run (after `make`):
- *   cc -std=c17 -O2 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -Iinclude tools/bench_tree.c build/libtumble.a -lm -o build/bench_tree && build/bench_tree
+ *   cc -std=c17 -O2 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -Iinclude tools/bench_tree.c build/libtumble.a
+ * -lm -o build/bench_tree && build/bench_tree
  *
  * 10,000 boxes (0.2 to 1 m) in a 200 m square do a random walk (speed up to
  * 3 m/s, 60 Hz). Each step moves every proxy (fat margin 0.1 m), then queries the
@@ -146,9 +147,10 @@ static void scenario(const char* name, bool predictive) {
     ms[k] = r.ms_per_step;
   }
   qsort(ms, RUNS, sizeof ms[0], cmp_double);
-  printf("%-11s %.3f ms/step median (min %.3f, max %.3f) | %.0f re-inserts, %.0f new-pair candidates per step | "
-         "height %d, area ratio %.1f\n",
-         name, ms[RUNS / 2], ms[0], ms[RUNS - 1], r.reinserts_per_step, r.pairs_per_step, r.height, r.area_ratio);
+  printf(
+      "%-11s %.3f ms/step median (min %.3f, max %.3f) | %.0f re-inserts, %.0f new-pair candidates per step | "
+      "height %d, area ratio %.1f\n",
+      name, ms[RUNS / 2], ms[0], ms[RUNS - 1], r.reinserts_per_step, r.pairs_per_step, r.height, r.area_ratio);
 }
 
 /* Building from scratch: incremental inserts, then a rebuild. */
