@@ -552,36 +552,27 @@ static ray_setup make_ray_setup(const tb_tree_ray_input* in) {
   return s;
 }
 
+/* One axis of the slab test: narrows [lo, hi] to where the ray is between the
+ * box's planes on this axis; false when that leaves nothing. */
+static inline bool ray_slab(float origin, float inv, bool flat, float lower, float upper, float* lo, float* hi) {
+  if (flat) return origin >= lower && origin <= upper;
+  float t1 = (lower - origin) * inv, t2 = (upper - origin) * inv;
+  if (t1 > t2) {
+    float tmp = t1;
+    t1 = t2;
+    t2 = tmp;
+  }
+  if (t1 > *lo) *lo = t1;
+  if (t2 < *hi) *hi = t2;
+  return *lo <= *hi;
+}
+
 /* Slab test. Monotone in the box: a box containing another is hit whenever that
  * one is (rounding is monotone), so pruning by a parent's box never loses a leaf. */
 static inline bool ray_box(const ray_setup* s, float max_fraction, tb_aabb b, float* enter) {
   float lo = 0.0f, hi = max_fraction;
-  if (s->flat_x) {
-    if (s->origin.x < b.lower.x || s->origin.x > b.upper.x) return false;
-  } else {
-    float t1 = (b.lower.x - s->origin.x) * s->inv.x, t2 = (b.upper.x - s->origin.x) * s->inv.x;
-    if (t1 > t2) {
-      float tmp = t1;
-      t1 = t2;
-      t2 = tmp;
-    }
-    if (t1 > lo) lo = t1;
-    if (t2 < hi) hi = t2;
-    if (lo > hi) return false;
-  }
-  if (s->flat_y) {
-    if (s->origin.y < b.lower.y || s->origin.y > b.upper.y) return false;
-  } else {
-    float t1 = (b.lower.y - s->origin.y) * s->inv.y, t2 = (b.upper.y - s->origin.y) * s->inv.y;
-    if (t1 > t2) {
-      float tmp = t1;
-      t1 = t2;
-      t2 = tmp;
-    }
-    if (t1 > lo) lo = t1;
-    if (t2 < hi) hi = t2;
-    if (lo > hi) return false;
-  }
+  if (!ray_slab(s->origin.x, s->inv.x, s->flat_x, b.lower.x, b.upper.x, &lo, &hi)) return false;
+  if (!ray_slab(s->origin.y, s->inv.y, s->flat_y, b.lower.y, b.upper.y, &lo, &hi)) return false;
   *enter = lo;
   return true;
 }
