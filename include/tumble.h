@@ -125,10 +125,17 @@ typedef struct tb_chain_id {
   uint16_t generation;
 } tb_chain_id;
 
+typedef struct tb_joint_id {
+  int32_t index1;
+  uint16_t world0;
+  uint16_t generation;
+} tb_joint_id;
+
 static inline bool tb_world_id_is_null(tb_world_id id) { return id.index1 == 0; }
 static inline bool tb_body_id_is_null(tb_body_id id) { return id.index1 == 0; }
 static inline bool tb_shape_id_is_null(tb_shape_id id) { return id.index1 == 0; }
 static inline bool tb_chain_id_is_null(tb_chain_id id) { return id.index1 == 0; }
+static inline bool tb_joint_id_is_null(tb_joint_id id) { return id.index1 == 0; }
 
 /* ----------------------------------------------------------------- world -- */
 
@@ -183,10 +190,31 @@ typedef struct tb_world_def {
   void* pre_solve_context;
   /* Mixing rules, fixed when a contact is created. Defaults: friction
    * sqrt(fa fb) (a frictionless shape makes the contact frictionless),
-   * restitution max(ra, rb) (a bouncy shape bounces on anything). */
+   * restitution max(ra, rb) (a bouncy shape bounces on anything). Contacts
+   * obey Coulomb's law per point: |tangent impulse| <= friction * normal impulse. */
   tb_mix_fn* friction_mix;
   tb_mix_fn* restitution_mix;
   void* mix_context;
+
+  /* Solver tuning (see "One step" in DESIGN.md). Contacts are soft constraints:
+   * a spring of contact_hertz (> 0, default 30; capped at a quarter of the
+   * substep rate) with contact_damping_ratio (>= 0, default 10) that pushes
+   * overlapping shapes apart no faster than contact_push_max_velocity (m/s,
+   * >= 0, default 3). Joints use joint_hertz (default 60) and
+   * joint_damping_ratio (default 2, i.e. over-damped) for their drift
+   * correction. */
+  float contact_hertz;
+  float contact_damping_ratio;
+  float contact_push_max_velocity;
+  float joint_hertz;
+  float joint_damping_ratio;
+  /* Restitution applies to approach speeds above this (m/s, >= 0, default 1). */
+  float restitution_threshold;
+  /* Speed limit of every body (m/s, > 0, default 1000): a guard against blow-ups. */
+  float maximum_linear_speed;
+  bool enable_sleep;        /* default true: resting islands fall asleep */
+  bool enable_continuous;   /* default true: fast bodies are swept (no tunnelling) */
+  bool enable_warm_starting; /* default true */
   void* user_data;
 } tb_world_def;
 
@@ -208,6 +236,17 @@ tb_integrator tb_world_get_integrator(tb_world_id world);
 tb_result tb_world_set_force_field(tb_world_id world, tb_force_field_fn* fn, void* context);
 /* Simulated time: the sum of all time steps taken (seconds). */
 double tb_world_get_time(tb_world_id world);
+/* Switches and tuning of the world definition, changeable between steps (same
+ * ranges as in tb_world_def). Turning sleep off wakes every body. */
+tb_result tb_world_enable_sleeping(tb_world_id world, bool enable);
+bool tb_world_is_sleeping_enabled(tb_world_id world);
+tb_result tb_world_enable_continuous(tb_world_id world, bool enable);
+bool tb_world_is_continuous_enabled(tb_world_id world);
+tb_result tb_world_enable_warm_starting(tb_world_id world, bool enable);
+tb_result tb_world_set_contact_tuning(tb_world_id world, float hertz, float damping_ratio, float push_max_velocity);
+tb_result tb_world_set_joint_tuning(tb_world_id world, float hertz, float damping_ratio);
+tb_result tb_world_set_restitution_threshold(tb_world_id world, float speed);
+tb_result tb_world_set_maximum_linear_speed(tb_world_id world, float speed);
 void* tb_world_get_user_data(tb_world_id world);
 tb_result tb_world_set_user_data(tb_world_id world, void* user_data);
 
@@ -219,6 +258,9 @@ typedef struct tb_counts {
   int contact_count;  /* pairs of shapes whose fat bounding boxes overlap */
   int touching_count; /* contacts with manifold points (speculative included) */
   int tree_height;    /* tallest of the broad phase's trees */
+  int joint_count;
+  int awake_contact_count; /* touching contacts the solver handled last step */
+  int sleeping_island_count;
 } tb_counts;
 
 tb_counts tb_world_get_counts(tb_world_id world);
@@ -251,6 +293,14 @@ typedef struct tb_body_def {
   float gravity_scale;     /* default 1 */
   bool fixed_rotation;
   bool enabled; /* default true */
+  /* A bullet is swept against dynamic bodies too, not only static ones (for
+   * small fast bodies such as projectiles). Default false. */
+  bool is_bullet;
+  bool enable_sleep; /* default true: the body may fall asleep when at rest */
+  bool is_awake;     /* default true: false creates it asleep */
+  /* Below this speed (m/s; rotation counts as speed at the body's extent) the
+   * body counts as at rest. >= 0, default 0.05. */
+  float sleep_threshold;
   void* user_data;
 } tb_body_def;
 
@@ -296,6 +346,24 @@ bool tb_body_is_enabled(tb_body_id body);
 tb_result tb_body_set_enabled(tb_body_id body, bool enabled);
 void* tb_body_get_user_data(tb_body_id body);
 tb_result tb_body_set_user_data(tb_body_id body, void* user_data);
+
+/* Sleep. A body sleeps with its whole island (the bodies it touches or is
+ * jointed to, through dynamic bodies) once they all stayed below their sleep
+ * threshold for TB_TIME_TO_SLEEP. Setting a body awake wakes its island; setting
+ * it asleep puts its island to sleep. Forces, impulses, velocities, joints and
+ * shape changes wake a body. */
+#define TB_TIME_TO_SLEEP 0.5f
+bool tb_body_is_awake(tb_body_id body);
+tb_result tb_body_set_awake(tb_body_id body, bool awake);
+bool tb_body_is_sleep_enabled(tb_body_id body);
+tb_result tb_body_enable_sleep(tb_body_id body, bool enable);
+float tb_body_get_sleep_threshold(tb_body_id body);
+tb_result tb_body_set_sleep_threshold(tb_body_id body, float speed);
+bool tb_body_is_bullet(tb_body_id body);
+tb_result tb_body_set_bullet(tb_body_id body, bool bullet);
+/* Number of joints attached to the body, and up to capacity of their handles. */
+int tb_body_get_joint_count(tb_body_id body);
+int tb_body_get_joints(tb_body_id body, tb_joint_id* out, int capacity);
 
 /* Forces and torques act over the next step and are then cleared. Impulses
  * change the velocity at once: dV = J / M, dw = (r x J) / I. Only dynamic bodies
@@ -397,6 +465,15 @@ typedef struct tb_shape_def {
   float density;     /* kg/m^2, >= 0, default 1 */
   float friction;    /* >= 0, default 0.6 */
   float restitution; /* >= 0, default 0 */
+  /* Rolling resistance coefficient (>= 0, default 0): a torque of up to
+   * rolling_resistance * normal force * radius opposes relative rolling, where
+   * radius is the rounding radius of a circle, capsule or rounded polygon
+   * (the larger of the two shapes' coefficient * radius is used). */
+  float rolling_resistance;
+  /* Surface speed (m/s, default 0) clockwise around the shape, i.e. to the
+   * right along the top of a box: a conveyor belt. A contact drives its
+   * bodies at the sum of its shapes' speeds. */
+  float tangent_speed;
   tb_filter filter;
   /* A sensor detects overlaps (sensor events) and never pushes anything. */
   bool is_sensor;
@@ -426,6 +503,10 @@ float tb_shape_get_friction(tb_shape_id shape);
 tb_result tb_shape_set_friction(tb_shape_id shape, float friction);
 float tb_shape_get_restitution(tb_shape_id shape);
 tb_result tb_shape_set_restitution(tb_shape_id shape, float restitution);
+float tb_shape_get_rolling_resistance(tb_shape_id shape);
+tb_result tb_shape_set_rolling_resistance(tb_shape_id shape, float rolling_resistance);
+float tb_shape_get_tangent_speed(tb_shape_id shape);
+tb_result tb_shape_set_tangent_speed(tb_shape_id shape, float speed);
 tb_filter tb_shape_get_filter(tb_shape_id shape);
 /* A new filter ends the shape's current contacts; allowed pairs return next step. */
 tb_result tb_shape_set_filter(tb_shape_id shape, tb_filter filter);
@@ -459,6 +540,11 @@ typedef struct tb_manifold_point {
   tb_vec2 point;    /* world point, midway between the two surfaces */
   float separation; /* signed gap along the normal; negative when overlapping */
   uint32_t id;      /* feature id */
+  /* Impulses the solver applied at this point in the last step (N s; 0 from
+   * the tb_collide_* functions): along the normal and along the tangent
+   * (n.y, -n.x). Divide by the time step for forces. */
+  float normal_impulse;
+  float tangent_impulse;
 } tb_manifold_point;
 
 /* The contact of two convex shapes: 0, 1 or 2 points and a unit normal that
@@ -540,6 +626,204 @@ tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_t
                                                  tb_transform xfb);
 tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
                                                  tb_transform xfb);
+
+/* ---------------------------------------------------------------- joints -- */
+
+/* Joints constrain two bodies. Anchors are in each body's own frame (relative
+ * to the body origin). Every joint can be created and destroyed at any time
+ * outside the step, also while its bodies sleep (it wakes them). Rigid parts
+ * of a joint are solved as soft constraints with the world's joint_hertz and
+ * joint_damping_ratio for drift; springs use their own hertz and damping ratio
+ * (hertz 0 means no spring). Errors: both bodies the same, bodies of different
+ * worlds, non-finite numbers, lower > upper limits, negative forces, hertz or
+ * damping ratios. */
+typedef enum tb_joint_type {
+  TB_JOINT_DISTANCE = 0,
+  TB_JOINT_MOTOR,
+  TB_JOINT_MOUSE,
+  TB_JOINT_PRISMATIC,
+  TB_JOINT_REVOLUTE,
+  TB_JOINT_WELD,
+  TB_JOINT_WHEEL
+} tb_joint_type;
+
+/* Keeps two anchor points at a distance: rigid, or a spring of hertz with
+ * min/max length limits. Default: rigid, length 1, limits 0 and TB_MAX_LENGTH. */
+typedef struct tb_distance_joint_def {
+  tb_body_id body_a, body_b;
+  tb_vec2 local_anchor_a, local_anchor_b;
+  float length; /* rest length, >= TB_LINEAR_SLOP */
+  bool enable_spring;
+  float hertz, damping_ratio; /* >= 0 */
+  bool enable_limit;
+  float min_length, max_length;
+  bool enable_motor;
+  float max_motor_force; /* N, >= 0 */
+  float motor_speed;     /* m/s, lengthening */
+  bool collide_connected; /* default false: the two bodies do not collide */
+  void* user_data;
+} tb_distance_joint_def;
+
+/* A shared point (pin): B rotates about the anchor relative to A. The angle is
+ * angle_b - angle_a - reference_angle. */
+typedef struct tb_revolute_joint_def {
+  tb_body_id body_a, body_b;
+  tb_vec2 local_anchor_a, local_anchor_b;
+  float reference_angle;
+  bool enable_limit;
+  float lower_angle, upper_angle; /* radians, lower <= upper */
+  bool enable_motor;
+  float max_motor_torque; /* N m, >= 0 */
+  float motor_speed;      /* rad/s */
+  bool enable_spring;     /* a torsional spring towards angle 0 */
+  float hertz, damping_ratio;
+  bool collide_connected;
+  void* user_data;
+} tb_revolute_joint_def;
+
+/* B slides along an axis fixed in A, without relative rotation. */
+typedef struct tb_prismatic_joint_def {
+  tb_body_id body_a, body_b;
+  tb_vec2 local_anchor_a, local_anchor_b;
+  tb_vec2 local_axis_a; /* unit (normalised on creation), default (1, 0) */
+  float reference_angle;
+  bool enable_limit;
+  float lower_translation, upper_translation; /* metres, lower <= upper */
+  bool enable_motor;
+  float max_motor_force; /* N, >= 0 */
+  float motor_speed;     /* m/s */
+  bool enable_spring;    /* towards translation 0 */
+  float hertz, damping_ratio;
+  bool collide_connected;
+  void* user_data;
+} tb_prismatic_joint_def;
+
+/* Glues B to A. Hertz 0 makes that part rigid; otherwise a spring. */
+typedef struct tb_weld_joint_def {
+  tb_body_id body_a, body_b;
+  tb_vec2 local_anchor_a, local_anchor_b;
+  float reference_angle;
+  float linear_hertz, angular_hertz; /* >= 0, default 0 (rigid) */
+  float linear_damping_ratio, angular_damping_ratio;
+  bool collide_connected;
+  void* user_data;
+} tb_weld_joint_def;
+
+/* A wheel (B) on a suspension axis fixed in A: a spring along the axis, free
+ * rotation with an optional motor. Default spring 1 Hz, damping ratio 0.7. */
+typedef struct tb_wheel_joint_def {
+  tb_body_id body_a, body_b;
+  tb_vec2 local_anchor_a, local_anchor_b;
+  tb_vec2 local_axis_a; /* unit, default (0, 1) */
+  bool enable_spring;   /* default true */
+  float hertz, damping_ratio;
+  bool enable_limit;
+  float lower_translation, upper_translation;
+  bool enable_motor;
+  float max_motor_torque; /* N m, >= 0 */
+  float motor_speed;      /* rad/s */
+  bool collide_connected;
+  void* user_data;
+} tb_wheel_joint_def;
+
+/* Pulls a point of B (the target's position at creation, kept in B's frame)
+ * towards a moving world target with a soft spring, at most max_force. For
+ * dragging with the mouse. body_a is only a reference (usually the ground).
+ * Default 5 Hz, damping ratio 0.7, max_force 1000 N. */
+typedef struct tb_mouse_joint_def {
+  tb_body_id body_a, body_b;
+  tb_vec2 target; /* world point */
+  float hertz, damping_ratio;
+  float max_force; /* N, >= 0 */
+  bool collide_connected; /* default true */
+  void* user_data;
+} tb_mouse_joint_def;
+
+/* Drives B towards a pose relative to A (linear_offset: B's centre in A's
+ * frame; angular_offset: angle_b - angle_a) with at most max_force and
+ * max_torque; for top-down friction and animated bodies. correction_factor in
+ * [0, 1] (default 0.3) is the fraction of the pose error corrected per step.
+ * Defaults: max_force 1 N, max_torque 1 N m. */
+typedef struct tb_motor_joint_def {
+  tb_body_id body_a, body_b;
+  tb_vec2 linear_offset;
+  float angular_offset;
+  float max_force, max_torque;
+  float correction_factor;
+  bool collide_connected;
+  void* user_data;
+} tb_motor_joint_def;
+
+tb_distance_joint_def tb_default_distance_joint_def(void);
+tb_revolute_joint_def tb_default_revolute_joint_def(void);
+tb_prismatic_joint_def tb_default_prismatic_joint_def(void);
+tb_weld_joint_def tb_default_weld_joint_def(void);
+tb_wheel_joint_def tb_default_wheel_joint_def(void);
+tb_mouse_joint_def tb_default_mouse_joint_def(void);
+tb_motor_joint_def tb_default_motor_joint_def(void);
+
+/* Create a joint; returns the null handle on error (see tb_last_error()). */
+tb_joint_id tb_create_distance_joint(tb_world_id world, const tb_distance_joint_def* def);
+tb_joint_id tb_create_revolute_joint(tb_world_id world, const tb_revolute_joint_def* def);
+tb_joint_id tb_create_prismatic_joint(tb_world_id world, const tb_prismatic_joint_def* def);
+tb_joint_id tb_create_weld_joint(tb_world_id world, const tb_weld_joint_def* def);
+tb_joint_id tb_create_wheel_joint(tb_world_id world, const tb_wheel_joint_def* def);
+tb_joint_id tb_create_mouse_joint(tb_world_id world, const tb_mouse_joint_def* def);
+tb_joint_id tb_create_motor_joint(tb_world_id world, const tb_motor_joint_def* def);
+/* Destroying a body destroys its joints. */
+tb_result tb_destroy_joint(tb_joint_id joint);
+bool tb_joint_is_valid(tb_joint_id joint);
+
+tb_joint_type tb_joint_get_type(tb_joint_id joint);
+tb_body_id tb_joint_get_body_a(tb_joint_id joint);
+tb_body_id tb_joint_get_body_b(tb_joint_id joint);
+tb_vec2 tb_joint_get_local_anchor_a(tb_joint_id joint);
+tb_vec2 tb_joint_get_local_anchor_b(tb_joint_id joint);
+bool tb_joint_get_collide_connected(tb_joint_id joint);
+tb_result tb_joint_set_collide_connected(tb_joint_id joint, bool collide);
+void* tb_joint_get_user_data(tb_joint_id joint);
+tb_result tb_joint_set_user_data(tb_joint_id joint, void* user_data);
+/* The force (N) and torque (N m) the joint applied to body B during the last step. */
+tb_vec2 tb_joint_get_constraint_force(tb_joint_id joint);
+float tb_joint_get_constraint_torque(tb_joint_id joint);
+
+/* Distance joint. */
+tb_result tb_distance_joint_set_length(tb_joint_id joint, float length);
+float tb_distance_joint_get_length(tb_joint_id joint);
+float tb_distance_joint_get_current_length(tb_joint_id joint);
+tb_result tb_distance_joint_set_spring(tb_joint_id joint, bool enable, float hertz, float damping_ratio);
+tb_result tb_distance_joint_set_limits(tb_joint_id joint, bool enable, float min_length, float max_length);
+
+/* Revolute joint. */
+float tb_revolute_joint_get_angle(tb_joint_id joint);
+tb_result tb_revolute_joint_set_limits(tb_joint_id joint, bool enable, float lower, float upper);
+tb_result tb_revolute_joint_set_motor(tb_joint_id joint, bool enable, float speed, float max_torque);
+tb_result tb_revolute_joint_set_spring(tb_joint_id joint, bool enable, float hertz, float damping_ratio);
+float tb_revolute_joint_get_motor_torque(tb_joint_id joint);
+
+/* Prismatic joint. */
+float tb_prismatic_joint_get_translation(tb_joint_id joint);
+float tb_prismatic_joint_get_speed(tb_joint_id joint);
+tb_result tb_prismatic_joint_set_limits(tb_joint_id joint, bool enable, float lower, float upper);
+tb_result tb_prismatic_joint_set_motor(tb_joint_id joint, bool enable, float speed, float max_force);
+tb_result tb_prismatic_joint_set_spring(tb_joint_id joint, bool enable, float hertz, float damping_ratio);
+float tb_prismatic_joint_get_motor_force(tb_joint_id joint);
+
+/* Weld joint. */
+tb_result tb_weld_joint_set_stiffness(tb_joint_id joint, float linear_hertz, float linear_damping_ratio,
+                                      float angular_hertz, float angular_damping_ratio);
+
+/* Wheel joint. */
+tb_result tb_wheel_joint_set_motor(tb_joint_id joint, bool enable, float speed, float max_torque);
+tb_result tb_wheel_joint_set_spring(tb_joint_id joint, bool enable, float hertz, float damping_ratio);
+float tb_wheel_joint_get_motor_torque(tb_joint_id joint);
+
+/* Mouse joint. */
+tb_result tb_mouse_joint_set_target(tb_joint_id joint, tb_vec2 target);
+tb_vec2 tb_mouse_joint_get_target(tb_joint_id joint);
+
+/* Motor joint. */
+tb_result tb_motor_joint_set_offsets(tb_joint_id joint, tb_vec2 linear_offset, float angular_offset);
 
 /* --------------------------------------------------------------- queries -- */
 

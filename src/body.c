@@ -21,12 +21,63 @@
 static const tb_vec2 zero2 = {0.0f, 0.0f};
 
 tb_body_def tb_default_body_def(void) {
-  return (tb_body_def){.type = TB_STATIC_BODY, .gravity_scale = 1.0f, .enabled = true};
+  return (tb_body_def){.type = TB_STATIC_BODY,
+                       .gravity_scale = 1.0f,
+                       .enabled = true,
+                       .enable_sleep = true,
+                       .is_awake = true,
+                       .sleep_threshold = 0.05f};
 }
 
 void tb_body_sync_transform(tb_body* b) {
   b->transform.q = tb_make_rot(b->angle);
   b->transform.p = tb_sub(b->center, tb_rotate(b->transform.q, b->local_center));
+}
+
+/* Extents about the centre of mass: the farthest surface point (rotation seen
+ * as speed, for sleep and sweeps) and the thinnest half-thickness (how far the
+ * body may move in a step before it could pass through something). */
+static void update_extents(tb_world* w, tb_body* b) {
+  float max_extent = 0.0f, min_extent = TB_MAX_LENGTH;
+  for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
+    const tb_shape* s = tb_shape_at(w, i);
+    float far = 0.0f, thin = TB_LINEAR_SLOP;
+    switch (s->type) {
+      case TB_SHAPE_CIRCLE:
+        far = tb_length(tb_sub(s->geom.circle.center, b->local_center)) + s->geom.circle.radius;
+        thin = s->geom.circle.radius;
+        break;
+      case TB_SHAPE_CAPSULE:
+        far = fmaxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
+                    tb_length(tb_sub(s->geom.capsule.center2, b->local_center))) +
+              s->geom.capsule.radius;
+        thin = s->geom.capsule.radius;
+        break;
+      case TB_SHAPE_SEGMENT:
+        far = fmaxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
+                    tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
+        break;
+      case TB_SHAPE_CHAIN_SEGMENT:
+        far = fmaxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
+                    tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
+        break;
+      case TB_SHAPE_POLYGON: {
+        const tb_polygon* p = &s->geom.polygon;
+        thin = TB_MAX_LENGTH;
+        for (int k = 0; k < p->count; ++k) {
+          far = fmaxf(far, tb_length(tb_sub(p->vertices[k], b->local_center)));
+          thin = fminf(thin, tb_dot(p->normals[k], tb_sub(p->vertices[k], p->centroid))); /* centroid to edge */
+        }
+        far += p->radius;
+        thin += p->radius;
+        break;
+      }
+    }
+    max_extent = fmaxf(max_extent, far);
+    min_extent = fminf(min_extent, thin);
+  }
+  b->max_extent = max_extent;
+  b->min_extent = min_extent;
 }
 
 void tb_body_update_mass(tb_world* w, tb_body* b) {
@@ -65,6 +116,7 @@ void tb_body_update_mass(tb_world* w, tb_body* b) {
   b->center = tb_transform_point(b->transform, b->local_center);
   b->linear_velocity = tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(b->center, old_center)));
   if (b->fixed_rotation) b->angular_velocity = 0.0f;
+  update_extents(w, b);
 }
 
 static tb_result check_type(tb_world* w, const char* fn, tb_body_type t) {
@@ -119,7 +171,8 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
       check_value(w, fn, "def->angular_velocity", def->angular_velocity) ||
       check_damping(w, fn, "def->linear_damping", def->linear_damping) ||
       check_damping(w, fn, "def->angular_damping", def->angular_damping) ||
-      check_value(w, fn, "def->gravity_scale", def->gravity_scale))
+      check_value(w, fn, "def->gravity_scale", def->gravity_scale) ||
+      check_damping(w, fn, "def->sleep_threshold", def->sleep_threshold))
     return null_id;
   int index = tb_pool_alloc(&w->bodies);
   if (index < 0) {
@@ -139,11 +192,22 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
   b->gravity_scale = def->gravity_scale;
   b->fixed_rotation = def->fixed_rotation;
   b->enabled = def->enabled;
+  b->is_bullet = def->is_bullet;
+  b->enable_sleep = def->enable_sleep;
+  b->sleep_threshold = def->sleep_threshold;
   b->user_data = def->user_data;
   b->shape_list = -1;
   b->contact_list = -1;
+  b->joint_list = -1;
   tb_body_sync_transform(b);
   tb_body_update_mass(w, b);
+  b->center0 = b->center;
+  b->angle0 = b->angle;
+  if (!tb_add_body_to_sets(w, index, def->is_awake)) {
+    tb_pool_release(&w->bodies, index);
+    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for another body", fn);
+    return null_id;
+  }
   return tb_make_body_id(w, index);
 }
 
@@ -172,8 +236,20 @@ void tb_body_update_proxies(tb_world* w, int body, tb_vec2 displacement) {
   }
 }
 
+/* Wakes the bodies a body touches (it is about to vanish or change). */
+static void wake_touching(tb_world* w, int body) {
+  for (int key = tb_body_at(w, body)->contact_list; key >= 0;) {
+    const tb_contact* c = (const tb_contact*)tb_pool_at(&w->contacts, key >> 1);
+    if (c->flags & TB_CONTACT_TOUCHING) tb_wake_body(w, c->edges[(key & 1) ^ 1].body);
+    key = c->edges[key & 1].next;
+  }
+}
+
 tb_result tb_destroy_body(tb_body_id id) {
   GET_BODY_FOR_CHANGE(id);
+  wake_touching(w, id.index1 - 1);
+  tb_joints_destroy_of_body(w, id.index1 - 1);
+  tb_remove_body_from_sets(w, id.index1 - 1);
   remove_proxies(w, id.index1 - 1);
   tb_chains_destroy_of_body(w, id.index1 - 1);
   for (int s = b->shape_list; s >= 0;) {
@@ -203,6 +279,8 @@ tb_result tb_body_set_type(tb_body_id id, tb_body_type type) {
   if (r != TB_OK) return r;
   if (b->type == type) return TB_OK;
   /* the shapes move to the tree of the new type; contacts are found anew */
+  wake_touching(w, id.index1 - 1);
+  tb_remove_body_from_sets(w, id.index1 - 1);
   if (b->enabled) remove_proxies(w, id.index1 - 1);
   tb_body_type old = b->type;
   b->type = type;
@@ -218,6 +296,7 @@ tb_result tb_body_set_type(tb_body_id id, tb_body_type type) {
   b->force = zero2;
   b->torque = 0.0f;
   tb_body_update_mass(w, b);
+  (void)tb_add_body_to_sets(w, id.index1 - 1, true);
   return TB_OK;
 }
 
@@ -248,7 +327,11 @@ tb_result tb_body_set_transform(tb_body_id id, tb_vec2 position, float angle) {
   b->transform.q = tb_make_rot(angle);
   b->transform.p = position;
   b->center = tb_transform_point(b->transform, b->local_center);
+  b->center0 = b->center;
+  b->angle0 = b->angle;
   tb_body_update_proxies(w, id.index1 - 1, (tb_vec2){0.0f, 0.0f});
+  wake_touching(w, id.index1 - 1);
+  tb_wake_body(w, id.index1 - 1);
   return TB_OK;
 }
 
@@ -270,7 +353,9 @@ tb_vec2 tb_body_get_linear_velocity(tb_body_id id) {
 tb_result tb_body_set_linear_velocity(tb_body_id id, tb_vec2 v) {
   GET_BODY_FOR_CHANGE(id);
   if (check_vector(w, __func__, "v", v)) return tb_last_result();
-  if (b->type != TB_STATIC_BODY) b->linear_velocity = v;
+  if (b->type == TB_STATIC_BODY) return TB_OK;
+  b->linear_velocity = v;
+  if (v.x != 0.0f || v.y != 0.0f) tb_wake_body(w, id.index1 - 1);
   return TB_OK;
 }
 
@@ -282,7 +367,9 @@ float tb_body_get_angular_velocity(tb_body_id id) {
 tb_result tb_body_set_angular_velocity(tb_body_id id, float omega) {
   GET_BODY_FOR_CHANGE(id);
   if (check_value(w, __func__, "w", omega)) return tb_last_result();
-  if (b->type != TB_STATIC_BODY && !b->fixed_rotation) b->angular_velocity = omega;
+  if (b->type == TB_STATIC_BODY || b->fixed_rotation) return TB_OK;
+  b->angular_velocity = omega;
+  if (omega != 0.0f) tb_wake_body(w, id.index1 - 1);
   return TB_OK;
 }
 
@@ -355,8 +442,13 @@ tb_result tb_body_set_enabled(tb_body_id id, bool enabled) {
   if (b->enabled == enabled) return TB_OK;
   if (enabled && !add_proxies(w, id.index1 - 1))
     return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the broad phase", __func__);
-  if (!enabled) remove_proxies(w, id.index1 - 1);
+  if (!enabled) {
+    wake_touching(w, id.index1 - 1);
+    tb_remove_body_from_sets(w, id.index1 - 1);
+    remove_proxies(w, id.index1 - 1);
+  }
   b->enabled = enabled;
+  if (enabled) (void)tb_add_body_to_sets(w, id.index1 - 1, true);
   return TB_OK;
 }
 
@@ -379,20 +471,25 @@ tb_result tb_body_apply_force(tb_body_id id, tb_vec2 force, tb_vec2 world_point)
   if (b->type != TB_DYNAMIC_BODY) return TB_OK;
   b->force = tb_add(b->force, force);
   b->torque += tb_cross(tb_sub(world_point, b->center), force);
+  tb_wake_body(w, id.index1 - 1);
   return TB_OK;
 }
 
 tb_result tb_body_apply_force_to_center(tb_body_id id, tb_vec2 force) {
   GET_BODY_FOR_CHANGE(id);
   if (check_vector(w, __func__, "force", force)) return tb_last_result();
-  if (b->type == TB_DYNAMIC_BODY) b->force = tb_add(b->force, force);
+  if (b->type != TB_DYNAMIC_BODY) return TB_OK;
+  b->force = tb_add(b->force, force);
+  tb_wake_body(w, id.index1 - 1);
   return TB_OK;
 }
 
 tb_result tb_body_apply_torque(tb_body_id id, float torque) {
   GET_BODY_FOR_CHANGE(id);
   if (check_value(w, __func__, "torque", torque)) return tb_last_result();
-  if (b->type == TB_DYNAMIC_BODY) b->torque += torque;
+  if (b->type != TB_DYNAMIC_BODY) return TB_OK;
+  b->torque += torque;
+  tb_wake_body(w, id.index1 - 1);
   return TB_OK;
 }
 
@@ -405,6 +502,7 @@ static tb_result apply_impulse(tb_world* w, tb_body* b, const char* fn, tb_vec2 
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the impulse would make the velocity overflow", fn);
   b->linear_velocity = v;
   b->angular_velocity = omega;
+  tb_wake_body(w, (int)(b - (tb_body*)w->bodies.items));
   return TB_OK;
 }
 
@@ -481,6 +579,7 @@ tb_result tb_body_set_mass_data(tb_body_id id, tb_mass_data md) {
 tb_result tb_body_reset_mass_data(tb_body_id id) {
   GET_BODY_FOR_CHANGE(id);
   tb_body_update_mass(w, b);
+  tb_wake_body(w, id.index1 - 1);
   return TB_OK;
 }
 
@@ -570,6 +669,78 @@ int tb_body_get_contact_data(tb_body_id id, tb_contact_data* out, int capacity) 
                                  c->restitution,
                                  (c->flags & TB_CONTACT_TOUCHING) != 0,
                                  (c->flags & TB_CONTACT_ENABLED) != 0};
+  }
+  return n;
+}
+
+/* ---- sleep, bullets, joints -------------------------------------------------- */
+
+bool tb_body_is_awake(tb_body_id id) {
+  GET_BODY(id, false);
+  return b->awake_index >= 0;
+}
+
+tb_result tb_body_set_awake(tb_body_id id, bool awake) {
+  GET_BODY_FOR_CHANGE(id);
+  if (awake) {
+    tb_wake_body(w, id.index1 - 1);
+  } else if (b->awake_index >= 0) {
+    tb_sleep_island_of(w, id.index1 - 1);
+  }
+  return TB_OK;
+}
+
+bool tb_body_is_sleep_enabled(tb_body_id id) {
+  GET_BODY(id, false);
+  return b->enable_sleep;
+}
+
+tb_result tb_body_enable_sleep(tb_body_id id, bool enable) {
+  GET_BODY_FOR_CHANGE(id);
+  b->enable_sleep = enable;
+  if (!enable) tb_wake_body(w, id.index1 - 1);
+  return TB_OK;
+}
+
+float tb_body_get_sleep_threshold(tb_body_id id) {
+  GET_BODY(id, 0.0f);
+  return b->sleep_threshold;
+}
+
+tb_result tb_body_set_sleep_threshold(tb_body_id id, float speed) {
+  GET_BODY_FOR_CHANGE(id);
+  if (check_damping(w, __func__, "speed", speed)) return tb_last_result();
+  b->sleep_threshold = speed;
+  return TB_OK;
+}
+
+bool tb_body_is_bullet(tb_body_id id) {
+  GET_BODY(id, false);
+  return b->is_bullet;
+}
+
+tb_result tb_body_set_bullet(tb_body_id id, bool bullet) {
+  GET_BODY_FOR_CHANGE(id);
+  b->is_bullet = bullet;
+  return TB_OK;
+}
+
+int tb_body_get_joint_count(tb_body_id id) {
+  GET_BODY(id, 0);
+  return b->joint_count;
+}
+
+int tb_body_get_joints(tb_body_id id, tb_joint_id* out, int capacity) {
+  GET_BODY(id, 0);
+  if (out == NULL || capacity < 0) {
+    tb_fail(w, out == NULL ? TB_ERR_NULL_ARGUMENT : TB_ERR_INVALID_ARGUMENT, "%s: %s", __func__,
+            out == NULL ? "out is NULL" : "capacity is negative");
+    return 0;
+  }
+  int n = 0;
+  for (int key = b->joint_list; key >= 0 && n < capacity;) {
+    out[n++] = tb_make_joint_id(w, key >> 1);
+    key = tb_joint_at(w, key >> 1)->edges[key & 1].next;
   }
   return n;
 }

@@ -25,11 +25,29 @@ typedef struct tb_body {
   bool fixed_rotation;
   bool enabled;
   bool mass_overridden; /* set by tb_body_set_mass_data until the shapes change */
+  bool is_bullet;
+  bool enable_sleep;
+  bool is_fast; /* moved far for its size last step: swept by the continuous pass */
+
+  /* Sleep and the awake set. awake_index is the body's place in world->awake
+   * (and its solver body); -1 when static, disabled or asleep. A sleeping body
+   * belongs to a sleeping island (sleep_island >= 0), linked by island_next. */
+  int awake_index;
+  int sleep_island;
+  int island_next;
+  float sleep_time;      /* seconds spent below sleep_threshold */
+  float sleep_threshold; /* m/s */
+  float max_extent;      /* largest distance from the centre of mass to a shape's surface */
+  float min_extent;      /* smallest half-thickness of its shapes (continuous collision) */
+  tb_vec2 center0;       /* centre and angle when the step began (continuous collision) */
+  float angle0;
 
   int shape_list; /* first shape index, -1 when none */
   int shape_count;
   int contact_list; /* first contact edge key (contact * 2 + side), -1 when none */
   int contact_count;
+  int joint_list; /* first joint edge key (joint * 2 + side), -1 when none */
+  int joint_count;
   void* user_data;
 } tb_body;
 

@@ -179,6 +179,7 @@ static bool should_pair(tb_world* w, int ia, int ib) {
   const tb_body* ba = tb_body_at(w, a->body);
   const tb_body* bb = tb_body_at(w, b->body);
   if (ba->type != TB_DYNAMIC_BODY && bb->type != TB_DYNAMIC_BODY) return false;
+  if ((ba->joint_count > 0 && bb->joint_count > 0) && !tb_joints_allow_collision(w, a->body, b->body)) return false;
   if (w->custom_filter != NULL &&
       !w->custom_filter(tb_make_shape_id(w, ia), tb_make_shape_id(w, ib), w->custom_filter_context))
     return false;

@@ -113,6 +113,7 @@ tb_result tb_destroy_chain(tb_chain_id id) {
   for (int k = 0; k < c->count; ++k) tb_shape_detach(w, c->shapes[k]);
   free_chain(w, id.index1 - 1);
   tb_body_update_mass(w, tb_body_at(w, body));
+  tb_wake_body(w, body);
   return TB_OK;
 }
 
@@ -149,7 +150,7 @@ void tb_chains_free(tb_world* w) {
 
 /* ---- manifolds ---------------------------------------------------------- */
 
-static const tb_manifold no_contact = {{0.0f, 0.0f}, {{{0.0f, 0.0f}, 0.0f, 0}, {{0.0f, 0.0f}, 0.0f, 0}}, 0};
+static const tb_manifold no_contact = {.point_count = 0};
 
 /* The filter described at the top, in the chain segment's frame. center_b is
  * B's centre (world). */

@@ -86,6 +86,16 @@ static float mix_restitution(const tb_world* w, float a, float b) {
   return w->restitution_mix != NULL ? w->restitution_mix(a, b, w->mix_context) : (a > b ? a : b);
 }
 
+/* The lever arm of rolling resistance: the rounding radius of a shape. */
+static float shape_rolling_radius(const tb_shape* s) {
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE: return s->geom.circle.radius;
+    case TB_SHAPE_CAPSULE: return s->geom.capsule.radius;
+    case TB_SHAPE_POLYGON: return s->geom.polygon.radius;
+    default: return 0.0f;
+  }
+}
+
 bool tb_contact_create(tb_world* w, int ia, int ib) {
   const tb_shape* sa = tb_shape_at(w, ia);
   const tb_shape* sb = tb_shape_at(w, ib);
@@ -109,6 +119,9 @@ bool tb_contact_create(tb_world* w, int ia, int ib) {
   c->edges[1].body = sb->body;
   c->friction = mix_friction(w, sa->friction, sb->friction);
   c->restitution = mix_restitution(w, sa->restitution, sb->restitution);
+  float rra = sa->rolling_resistance * shape_rolling_radius(sa), rrb = sb->rolling_resistance * shape_rolling_radius(sb);
+  c->rolling_resistance = rra > rrb ? rra : rrb;
+  c->tangent_speed = sa->tangent_speed + sb->tangent_speed;
   c->flags = TB_CONTACT_ENABLED;
   if (sa->sensor || sb->sensor) c->flags |= TB_CONTACT_SENSOR;
   if (sa->enable_contact_events || sb->enable_contact_events) c->flags |= TB_CONTACT_EVENTS;
@@ -204,37 +217,83 @@ static void report_begin(tb_world* w, const tb_contact* c) {
   }
 }
 
-void tb_contacts_update(tb_world* w) {
+/* The new manifold keeps the impulses of the points with the same feature id. */
+static void carry_impulses(const tb_manifold* old, tb_manifold* m) {
+  for (int i = 0; i < m->point_count; ++i) {
+    tb_manifold_point* p = &m->points[i];
+    p->normal_impulse = p->tangent_impulse = 0.0f;
+    for (int k = 0; k < old->point_count; ++k)
+      if (old->points[k].id == p->id) {
+        p->normal_impulse = old->points[k].normal_impulse;
+        p->tangent_impulse = old->points[k].tangent_impulse;
+        break;
+      }
+  }
+}
+
+/* Updates one contact; false when it was destroyed (bounding boxes apart). */
+static bool update_contact(tb_world* w, int i) {
   const tb_broad_phase* bp = &w->broad_phase;
-  for (int i = 0; i < w->contacts.high; ++i) {
-    if (!tb_pool_alive(&w->contacts, i)) continue;
-    tb_contact* c = contact_at(w, i);
-    const tb_shape* sa = tb_shape_at(w, c->shape_a);
-    const tb_shape* sb = tb_shape_at(w, c->shape_b);
-    if (!aabbs_overlap(tb_tree_get_fat_aabb(&bp->trees[sa->tree], sa->proxy),
-                       tb_tree_get_fat_aabb(&bp->trees[sb->tree], sb->proxy))) {
-      tb_contact_destroy(w, i);
-      continue;
+  tb_contact* c = contact_at(w, i);
+  const tb_shape* sa = tb_shape_at(w, c->shape_a);
+  const tb_shape* sb = tb_shape_at(w, c->shape_b);
+  if (!aabbs_overlap(tb_tree_get_fat_aabb(&bp->trees[sa->tree], sa->proxy),
+                     tb_tree_get_fat_aabb(&bp->trees[sb->tree], sb->proxy))) {
+    tb_contact_destroy(w, i);
+    return false;
+  }
+  tb_manifold old = c->manifold;
+  c->manifold = collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb,
+                                                  tb_body_at(w, sb->body)->transform);
+  carry_impulses(&old, &c->manifold);
+  bool touching = c->manifold.point_count > 0;
+  if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */
+    touching = false;
+    for (int k = 0; k < c->manifold.point_count; ++k) touching |= c->manifold.points[k].separation < 0.0f;
+  }
+  bool was_touching = (c->flags & TB_CONTACT_TOUCHING) != 0;
+  if (touching && !was_touching) {
+    c->flags |= TB_CONTACT_TOUCHING;
+    report_begin(w, c);
+  } else if (!touching && was_touching) {
+    report_end(w, c); /* reads the touching flag: clear it after */
+    c->flags &= ~(uint32_t)TB_CONTACT_TOUCHING;
+  }
+  c->flags |= TB_CONTACT_ENABLED;
+  if (touching && (c->flags & TB_CONTACT_PRE_SOLVE) && !(c->flags & TB_CONTACT_SENSOR) && w->pre_solve != NULL &&
+      !w->pre_solve(tb_make_shape_id(w, c->shape_a), tb_make_shape_id(w, c->shape_b), &c->manifold,
+                    w->pre_solve_context))
+    c->flags &= ~(uint32_t)TB_CONTACT_ENABLED;
+  return true;
+}
+
+void tb_contacts_update(tb_world* w) {
+  w->step_contact_count = 0;
+  /* each contact once, from the body with the lower awake index (or the only
+   * awake one); the set grows when a touch wakes an island, and the loop
+   * bound follows it so the woken bodies are handled in this same step */
+  for (int i = 0; i < w->awake_count; ++i) {
+    for (int key = tb_body_at(w, w->awake[i])->contact_list; key >= 0;) {
+      int index = key >> 1;
+      tb_contact* c = contact_at(w, index);
+      int next = c->edges[key & 1].next;
+      int other = c->edges[(key & 1) ^ 1].body;
+      key = next;
+      int other_awake = tb_body_at(w, other)->awake_index;
+      if (other_awake >= 0 && other_awake < i) continue;
+      if (!update_contact(w, index)) continue;
+      c = contact_at(w, index);
+      const uint32_t need = TB_CONTACT_TOUCHING | TB_CONTACT_ENABLED;
+      if ((c->flags & need) != need || (c->flags & TB_CONTACT_SENSOR)) continue;
+      const tb_body* ob = tb_body_at(w, other);
+      if (ob->sleep_island >= 0) tb_wake_body(w, other);
+      const tb_body* ba = tb_body_at(w, c->edges[0].body);
+      const tb_body* bb = tb_body_at(w, c->edges[1].body);
+      if (ba->type != TB_DYNAMIC_BODY && bb->type != TB_DYNAMIC_BODY) continue;
+      if (!tb_array_reserve((void**)&w->step_contacts, &w->step_contact_capacity, w->step_contact_count + 1,
+                            sizeof(int)))
+        continue; /* out of memory: this contact does not push this step */
+      w->step_contacts[w->step_contact_count++] = index;
     }
-    c->manifold = collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb,
-                                                    tb_body_at(w, sb->body)->transform);
-    bool touching = c->manifold.point_count > 0;
-    if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */
-      touching = false;
-      for (int k = 0; k < c->manifold.point_count; ++k) touching |= c->manifold.points[k].separation < 0.0f;
-    }
-    bool was_touching = (c->flags & TB_CONTACT_TOUCHING) != 0;
-    if (touching && !was_touching) {
-      c->flags |= TB_CONTACT_TOUCHING;
-      report_begin(w, c);
-    } else if (!touching && was_touching) {
-      report_end(w, c); /* reads the touching flag: clear it after */
-      c->flags &= ~(uint32_t)TB_CONTACT_TOUCHING;
-    }
-    c->flags |= TB_CONTACT_ENABLED;
-    if (touching && (c->flags & TB_CONTACT_PRE_SOLVE) && !(c->flags & TB_CONTACT_SENSOR) && w->pre_solve != NULL &&
-        !w->pre_solve(tb_make_shape_id(w, c->shape_a), tb_make_shape_id(w, c->shape_b), &c->manifold,
-                      w->pre_solve_context))
-      c->flags &= ~(uint32_t)TB_CONTACT_ENABLED;
   }
 }

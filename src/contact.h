@@ -21,8 +21,11 @@ typedef struct tb_contact_edge {
 typedef struct tb_contact {
   int shape_a, shape_b; /* ordered so that a collide function takes (A, B) */
   tb_contact_edge edges[2];
-  tb_manifold manifold;
+  tb_manifold manifold; /* points carry the impulses kept for warm starting */
   float friction, restitution;
+  float rolling_resistance; /* coefficient times radius (m) */
+  float tangent_speed;
+  float rolling_impulse;
   uint32_t flags;
 } tb_contact;
 
@@ -34,7 +37,9 @@ bool tb_contact_create(struct tb_world* w, int shape_a, int shape_b);
 void tb_contact_destroy(struct tb_world* w, int contact);
 /* Destroys every contact of a body (all its shapes), or of one shape when shape >= 0. */
 void tb_contacts_destroy_of_body(struct tb_world* w, int body, int shape);
-/* Narrow phase for every contact; records begin, end, hit and sensor events. */
+/* Narrow phase for the contacts of awake bodies; records begin, end, hit and
+ * sensor events, wakes sleeping bodies that start being touched, and lists
+ * the touching contacts the solver must handle in world->step_contacts. */
 void tb_contacts_update(struct tb_world* w);
 /* Whether a pair of shape types has a manifold function (segment-segment has none). */
 bool tb_shape_types_collide(tb_shape_type a, tb_shape_type b);

@@ -77,13 +77,13 @@ static inline void add_point(local_manifold* m, tb_vec2 p, float sep, uint32_t i
 }
 
 static inline tb_manifold to_world(const local_manifold* l, tb_transform xfa) {
-  tb_manifold_point p0 = {{0.0f, 0.0f}, 0.0f, 0u}, p1 = p0;
+  tb_manifold_point p0 = {{0.0f, 0.0f}, 0.0f, 0u, 0.0f, 0.0f}, p1 = p0;
   tb_vec2 n = {0.0f, 0.0f};
   if (l->count > 0) {
     n = tb_rotate(xfa.q, l->normal);
-    p0 = (tb_manifold_point){tb_transform_point(xfa, l->point[0]), l->sep[0], l->id[0]};
+    p0 = (tb_manifold_point){tb_transform_point(xfa, l->point[0]), l->sep[0], l->id[0], 0.0f, 0.0f};
   }
-  if (l->count > 1) p1 = (tb_manifold_point){tb_transform_point(xfa, l->point[1]), l->sep[1], l->id[1]};
+  if (l->count > 1) p1 = (tb_manifold_point){tb_transform_point(xfa, l->point[1]), l->sep[1], l->id[1], 0.0f, 0.0f};
   return (tb_manifold){n, {p0, p1}, l->count};
 }
 

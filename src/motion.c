@@ -1,4 +1,5 @@
-/* Free motion: the lecture's ODE  y = (X, theta, V, w),
+/* Free motion (of bodies without contacts or joints in this step, when the
+ * world's integrator is midpoint or RK4): the lecture's ODE  y = (X, theta, V, w),
  *   dy/dt = (V, w, g s + (F + F_field)/M - c_v V, (T + T_field)/I - c_w w),
  * integrated per substep h = dt / substeps.
  *
@@ -106,42 +107,25 @@ static bool state_finite(const state* y) {
   return tb_vec_finite(y->x) && isfinite(y->a) && tb_vec_finite(y->v) && isfinite(y->w);
 }
 
-int tb_integrate_bodies(tb_world* w, float dt, int substeps) {
+bool tb_integrate_free_body(tb_world* w, int index, float dt, int substeps) {
   float h = dt / (float)substeps;
-  int bad = 0;
-  for (int i = 0; i < w->bodies.high; ++i) {
-    if (!tb_pool_alive(&w->bodies, i)) continue;
-    tb_body* b = tb_body_at(w, i);
-    if (b->type == TB_STATIC_BODY || !b->enabled) continue;
-    state y = {b->center, b->angle, b->linear_velocity, b->angular_velocity};
-    if (b->type == TB_KINEMATIC_BODY) {
-      for (int k = 0; k < substeps; ++k) {
-        y.x = tb_mul_add(y.x, h, y.v);
-        y.a += h * y.w;
-      }
-    } else {
-      body_ctx c = {w, b, tb_make_body_id(w, i), tb_scale(b->gravity_scale, w->gravity)};
-      for (int k = 0; k < substeps; ++k) {
-        double t = w->time + (double)k * h;
-        switch (w->integrator) {
-          case TB_INTEGRATOR_SEMI_IMPLICIT_EULER: step_euler(&c, t, h, &y); break;
-          case TB_INTEGRATOR_MIDPOINT: step_midpoint(&c, t, h, &y); break;
-          case TB_INTEGRATOR_RK4: step_rk4(&c, t, h, &y); break;
-        }
-      }
-      if (b->fixed_rotation) y.w = 0.0f;
+  tb_body* b = tb_body_at(w, index);
+  state y = {b->center, b->angle, b->linear_velocity, b->angular_velocity};
+  body_ctx c = {w, b, tb_make_body_id(w, index), tb_scale(b->gravity_scale, w->gravity)};
+  for (int k = 0; k < substeps; ++k) {
+    double t = w->time + (double)k * h;
+    switch (w->integrator) {
+      case TB_INTEGRATOR_SEMI_IMPLICIT_EULER: step_euler(&c, t, h, &y); break;
+      case TB_INTEGRATOR_MIDPOINT: step_midpoint(&c, t, h, &y); break;
+      case TB_INTEGRATOR_RK4: step_rk4(&c, t, h, &y); break;
     }
-    b->force = (tb_vec2){0.0f, 0.0f};
-    b->torque = 0.0f;
-    if (!state_finite(&y)) { /* contain the NaN: this body keeps its old state */
-      bad += 1;
-      continue;
-    }
-    b->center = y.x;
-    b->angle = y.a;
-    b->linear_velocity = y.v;
-    b->angular_velocity = y.w;
-    tb_body_sync_transform(b);
   }
-  return bad;
+  if (b->fixed_rotation) y.w = 0.0f;
+  if (!state_finite(&y)) return false; /* contain the NaN: this body keeps its old state */
+  b->center = y.x;
+  b->angle = y.a;
+  b->linear_velocity = y.v;
+  b->angular_velocity = y.w;
+  tb_body_sync_transform(b);
+  return true;
 }

@@ -45,13 +45,20 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
     return null_id;
   }
   if (check_material(w, fn, "def->density", def->density) || check_material(w, fn, "def->friction", def->friction) ||
-      check_material(w, fn, "def->restitution", def->restitution))
+      check_material(w, fn, "def->restitution", def->restitution) ||
+      check_material(w, fn, "def->rolling_resistance", def->rolling_resistance))
     return null_id;
+  if (!tb_value_ok(def->tangent_speed)) {
+    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->tangent_speed = %g is not finite", fn, (double)def->tangent_speed);
+    return null_id;
+  }
   const char* problem = NULL;
   tb_shape proto = {.type = type,
                     .density = def->density,
                     .friction = def->friction,
                     .restitution = def->restitution,
+                    .rolling_resistance = def->rolling_resistance,
+                    .tangent_speed = def->tangent_speed,
                     .filter = def->filter,
                     .sensor = def->is_sensor,
                     .enable_sensor_events = def->enable_sensor_events,
@@ -93,6 +100,7 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
   int index = tb_shape_attach(w, body_id.index1 - 1, &proto, fn);
   if (index < 0) return null_id;
   tb_body_update_mass(w, tb_body_at(w, body_id.index1 - 1));
+  tb_wake_body(w, body_id.index1 - 1);
   return tb_make_shape_id(w, index);
 }
 
@@ -154,6 +162,7 @@ tb_result tb_destroy_shape(tb_shape_id id) {
   int body = s->body;
   tb_shape_detach(w, id.index1 - 1);
   tb_body_update_mass(w, tb_body_at(w, body));
+  tb_wake_body(w, body);
   return TB_OK;
 }
 
@@ -185,6 +194,7 @@ tb_result tb_shape_set_density(tb_shape_id id, float density) {
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: density %g makes the mass overflow", __func__, (double)density);
   }
   tb_body_update_mass(w, tb_body_at(w, s->body));
+  tb_wake_body(w, s->body);
   return TB_OK;
 }
 
@@ -209,6 +219,31 @@ tb_result tb_shape_set_restitution(tb_shape_id id, float restitution) {
   GET_SHAPE_FOR_CHANGE(id);
   if (check_material(w, __func__, "restitution", restitution)) return tb_last_result();
   s->restitution = restitution;
+  return TB_OK;
+}
+
+float tb_shape_get_rolling_resistance(tb_shape_id id) {
+  GET_SHAPE(id, 0.0f);
+  return s->rolling_resistance;
+}
+
+tb_result tb_shape_set_rolling_resistance(tb_shape_id id, float rolling_resistance) {
+  GET_SHAPE_FOR_CHANGE(id);
+  if (check_material(w, __func__, "rolling_resistance", rolling_resistance)) return tb_last_result();
+  s->rolling_resistance = rolling_resistance;
+  return TB_OK;
+}
+
+float tb_shape_get_tangent_speed(tb_shape_id id) {
+  GET_SHAPE(id, 0.0f);
+  return s->tangent_speed;
+}
+
+tb_result tb_shape_set_tangent_speed(tb_shape_id id, float speed) {
+  GET_SHAPE_FOR_CHANGE(id);
+  if (!tb_value_ok(speed))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: speed = %g is not finite", __func__, (double)speed);
+  s->tangent_speed = speed;
   return TB_OK;
 }
 

@@ -15,7 +15,7 @@ typedef struct tb_shape {
   } geom;
   int body;       /* owning body's slot */
   int prev, next; /* the body's shape list, -1 at the ends */
-  float density, friction, restitution;
+  float density, friction, restitution, rolling_resistance, tangent_speed;
   tb_filter filter;
   bool sensor;
   bool enable_sensor_events, enable_contact_events, enable_hit_events, enable_pre_solve_events;

@@ -13,8 +13,40 @@ static tb_world* worlds[TB_MAX_WORLDS];
 static uint16_t world_generations[TB_MAX_WORLDS];
 
 tb_world_def tb_default_world_def(void) {
-  return (tb_world_def){
-      .gravity = {0.0f, -10.0f}, .integrator = TB_INTEGRATOR_SEMI_IMPLICIT_EULER, .hit_event_threshold = 1.0f};
+  return (tb_world_def){.gravity = {0.0f, -10.0f},
+                        .integrator = TB_INTEGRATOR_SEMI_IMPLICIT_EULER,
+                        .hit_event_threshold = 1.0f,
+                        .contact_hertz = 30.0f,
+                        .contact_damping_ratio = 10.0f,
+                        .contact_push_max_velocity = 3.0f,
+                        .joint_hertz = 60.0f,
+                        .joint_damping_ratio = 2.0f,
+                        .restitution_threshold = 1.0f,
+                        .maximum_linear_speed = 1000.0f,
+                        .enable_sleep = true,
+                        .enable_continuous = true,
+                        .enable_warm_starting = true};
+}
+
+/* Range checks shared by tb_create_world and the setters. */
+static tb_result check_positive(tb_world* w, const char* fn, const char* what, float x) {
+  if (!tb_value_ok(x) || x <= 0.0f) return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and finite", fn, what, (double)x);
+  return TB_OK;
+}
+static tb_result check_non_negative(tb_world* w, const char* fn, const char* what, float x) {
+  if (!tb_value_ok(x) || x < 0.0f) return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, what, (double)x);
+  return TB_OK;
+}
+static tb_result check_contact_tuning(tb_world* w, const char* fn, float hertz, float zeta, float push) {
+  tb_result r = check_positive(w, fn, "contact hertz", hertz);
+  if (r == TB_OK) r = check_non_negative(w, fn, "contact damping ratio", zeta);
+  if (r == TB_OK) r = check_non_negative(w, fn, "contact push max velocity", push);
+  return r;
+}
+static tb_result check_joint_tuning(tb_world* w, const char* fn, float hertz, float zeta) {
+  tb_result r = check_positive(w, fn, "joint hertz", hertz);
+  if (r == TB_OK) r = check_non_negative(w, fn, "joint damping ratio", zeta);
+  return r;
 }
 
 static tb_result check_integrator(tb_world* w, const char* fn, tb_integrator in) {
@@ -35,6 +67,12 @@ tb_world_id tb_create_world(const tb_world_def* def) {
     return null_id;
   }
   if (check_integrator(NULL, "tb_create_world", def->integrator) != TB_OK) return null_id;
+  if (check_contact_tuning(NULL, "tb_create_world", def->contact_hertz, def->contact_damping_ratio,
+                           def->contact_push_max_velocity) != TB_OK ||
+      check_joint_tuning(NULL, "tb_create_world", def->joint_hertz, def->joint_damping_ratio) != TB_OK ||
+      check_non_negative(NULL, "tb_create_world", "def->restitution_threshold", def->restitution_threshold) != TB_OK ||
+      check_positive(NULL, "tb_create_world", "def->maximum_linear_speed", def->maximum_linear_speed) != TB_OK)
+    return null_id;
   if (!tb_value_ok(def->hit_event_threshold) || def->hit_event_threshold < 0.0f) {
     tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_create_world: def->hit_event_threshold = %g must be >= 0 and finite",
             (double)def->hit_event_threshold);
@@ -71,6 +109,18 @@ tb_world_id tb_create_world(const tb_world_def* def) {
   tb_pool_init(&w->shapes, sizeof(tb_shape));
   tb_pool_init(&w->contacts, sizeof(tb_contact));
   tb_pool_init(&w->chains, sizeof(tb_chain));
+  tb_pool_init(&w->joints, sizeof(tb_joint));
+  tb_pool_init(&w->islands, tb_island_size());
+  w->contact_hertz = def->contact_hertz;
+  w->contact_damping_ratio = def->contact_damping_ratio;
+  w->contact_push_max_velocity = def->contact_push_max_velocity;
+  w->joint_hertz = def->joint_hertz;
+  w->joint_damping_ratio = def->joint_damping_ratio;
+  w->restitution_threshold = def->restitution_threshold;
+  w->maximum_linear_speed = def->maximum_linear_speed;
+  w->enable_sleep = def->enable_sleep;
+  w->enable_continuous = def->enable_continuous;
+  w->enable_warm_starting = def->enable_warm_starting;
   if (tb_broad_phase_init(&w->broad_phase) != TB_OK) {
     free(w);
     tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_create_world: no memory");
@@ -105,18 +155,18 @@ tb_world* tb_world_get_unlocked(tb_world_id id, const char* fn) {
 
 /* Shared checks of body and shape handles: the world, then slot and generation.
  * fn == NULL resolves quietly (for the *_is_valid queries). */
-typedef enum handle_kind { BODY, SHAPE, CHAIN } handle_kind;
+typedef enum handle_kind { BODY, SHAPE, CHAIN, JOINT } handle_kind;
 
 static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, handle_kind kind, tb_world** out, const char* fn,
                      bool unlocked) {
-  const char* what = kind == SHAPE ? "shape" : kind == CHAIN ? "chain" : "body";
+  const char* what = kind == SHAPE ? "shape" : kind == CHAIN ? "chain" : kind == JOINT ? "joint" : "body";
   if (index1 <= 0 || world0 >= TB_MAX_WORLDS || worlds[world0] == NULL) {
     if (fn != NULL)
       tb_fail(NULL, TB_ERR_STALE_HANDLE, "%s: the %s handle is null, or its world was destroyed", fn, what);
     return NULL;
   }
   tb_world* w = worlds[world0];
-  tb_pool* pool = kind == SHAPE ? &w->shapes : kind == CHAIN ? &w->chains : &w->bodies;
+  tb_pool* pool = kind == SHAPE ? &w->shapes : kind == CHAIN ? &w->chains : kind == JOINT ? &w->joints : &w->bodies;
   int index = index1 - 1;
   if (!tb_pool_alive(pool, index) || pool->generations[index] != gen) {
     if (fn != NULL) tb_fail(w, TB_ERR_STALE_HANDLE, "%s: the %s was destroyed (stale handle)", fn, what);
@@ -139,6 +189,12 @@ tb_shape* tb_shape_get(tb_shape_id id, tb_world** w, const char* fn) {
 struct tb_chain* tb_chain_get(tb_chain_id id, tb_world** w, const char* fn) {
   return resolve(id.index1, id.world0, id.generation, CHAIN, w, fn, false);
 }
+tb_joint* tb_joint_get(tb_joint_id id, tb_world** w, const char* fn) {
+  return resolve(id.index1, id.world0, id.generation, JOINT, w, fn, false);
+}
+tb_joint* tb_joint_get_unlocked(tb_joint_id id, tb_world** w, const char* fn) {
+  return resolve(id.index1, id.world0, id.generation, JOINT, w, fn, true);
+}
 tb_body* tb_body_get_unlocked(tb_body_id id, tb_world** w, const char* fn) {
   return resolve(id.index1, id.world0, id.generation, BODY, w, fn, true);
 }
@@ -152,6 +208,9 @@ tb_body_id tb_make_body_id(const tb_world* w, int index) {
 tb_shape_id tb_make_shape_id(const tb_world* w, int index) {
   return (tb_shape_id){index + 1, w->index, w->shapes.generations[index]};
 }
+tb_joint_id tb_make_joint_id(const tb_world* w, int index) {
+  return (tb_joint_id){index + 1, w->index, w->joints.generations[index]};
+}
 
 tb_result tb_destroy_world(tb_world_id id) {
   tb_world* w = tb_world_get_unlocked(id, "tb_destroy_world");
@@ -161,7 +220,15 @@ tb_result tb_destroy_world(tb_world_id id) {
   tb_pool_free(&w->bodies);
   tb_pool_free(&w->shapes);
   tb_pool_free(&w->contacts);
+  tb_pool_free(&w->joints);
+  tb_islands_free(w);
   tb_chains_free(w);
+  free(w->awake);
+  free(w->states);
+  free(w->step_contacts);
+  free(w->constraints);
+  free(w->step_joints);
+  free(w->scratch);
   tb_broad_phase_free(&w->broad_phase);
   free(w->begin_events);
   free(w->end_events);
@@ -189,14 +256,14 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   w->begin_count = w->end_count = w->hit_count = 0;
   w->sensor_begin_count = w->sensor_end_count = 0;
   tb_broad_phase_update_pairs(w); /* pairs of the proxies that moved last step */
-  tb_contacts_update(w);          /* manifolds at the start of the step; events */
-  int bad = tb_integrate_bodies(w, time_step, substeps);
-  for (int i = 0; i < w->bodies.high; ++i) { /* shapes follow the bodies that moved */
-    if (!tb_pool_alive(&w->bodies, i)) continue;
-    const tb_body* b = tb_body_at(w, i);
-    if (b->type == TB_STATIC_BODY || !b->enabled) continue;
-    tb_body_update_proxies(w, i, tb_scale(time_step, b->linear_velocity));
+  tb_contacts_update(w);          /* manifolds at the start of the step; events; wake-ups */
+  int bad = tb_solve(w, time_step, substeps);
+  if (w->enable_continuous) tb_solve_continuous(w);
+  for (int i = 0; i < w->awake_count; ++i) { /* shapes follow the bodies that moved */
+    int index = w->awake[i];
+    tb_body_update_proxies(w, index, tb_scale(time_step, tb_body_at(w, index)->linear_velocity));
   }
+  tb_update_sleep(w);
   w->locked = false;
   w->time += time_step;
   w->step_count += 1;
@@ -244,6 +311,79 @@ tb_result tb_world_set_force_field(tb_world_id id, tb_force_field_fn* fn, void* 
   return TB_OK;
 }
 
+tb_result tb_world_enable_sleeping(tb_world_id id, bool enable) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_enable_sleeping");
+  if (w == NULL) return tb_last_result();
+  w->enable_sleep = enable;
+  if (!enable) tb_wake_all(w);
+  return TB_OK;
+}
+
+bool tb_world_is_sleeping_enabled(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_is_sleeping_enabled");
+  return w != NULL && w->enable_sleep;
+}
+
+tb_result tb_world_enable_continuous(tb_world_id id, bool enable) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_enable_continuous");
+  if (w == NULL) return tb_last_result();
+  w->enable_continuous = enable;
+  return TB_OK;
+}
+
+bool tb_world_is_continuous_enabled(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_is_continuous_enabled");
+  return w != NULL && w->enable_continuous;
+}
+
+tb_result tb_world_enable_warm_starting(tb_world_id id, bool enable) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_enable_warm_starting");
+  if (w == NULL) return tb_last_result();
+  w->enable_warm_starting = enable;
+  return TB_OK;
+}
+
+tb_result tb_world_set_contact_tuning(tb_world_id id, float hertz, float damping_ratio, float push_max_velocity) {
+  const char* fn = "tb_world_set_contact_tuning";
+  tb_world* w = tb_world_get_unlocked(id, fn);
+  if (w == NULL) return tb_last_result();
+  tb_result r = check_contact_tuning(w, fn, hertz, damping_ratio, push_max_velocity);
+  if (r != TB_OK) return r;
+  w->contact_hertz = hertz;
+  w->contact_damping_ratio = damping_ratio;
+  w->contact_push_max_velocity = push_max_velocity;
+  return TB_OK;
+}
+
+tb_result tb_world_set_joint_tuning(tb_world_id id, float hertz, float damping_ratio) {
+  const char* fn = "tb_world_set_joint_tuning";
+  tb_world* w = tb_world_get_unlocked(id, fn);
+  if (w == NULL) return tb_last_result();
+  tb_result r = check_joint_tuning(w, fn, hertz, damping_ratio);
+  if (r != TB_OK) return r;
+  w->joint_hertz = hertz;
+  w->joint_damping_ratio = damping_ratio;
+  return TB_OK;
+}
+
+tb_result tb_world_set_restitution_threshold(tb_world_id id, float speed) {
+  const char* fn = "tb_world_set_restitution_threshold";
+  tb_world* w = tb_world_get_unlocked(id, fn);
+  if (w == NULL) return tb_last_result();
+  tb_result r = check_non_negative(w, fn, "speed", speed);
+  if (r == TB_OK) w->restitution_threshold = speed;
+  return r;
+}
+
+tb_result tb_world_set_maximum_linear_speed(tb_world_id id, float speed) {
+  const char* fn = "tb_world_set_maximum_linear_speed";
+  tb_world* w = tb_world_get_unlocked(id, fn);
+  if (w == NULL) return tb_last_result();
+  tb_result r = check_positive(w, fn, "speed", speed);
+  if (r == TB_OK) w->maximum_linear_speed = speed;
+  return r;
+}
+
 double tb_world_get_time(tb_world_id id) {
   tb_world* w = tb_world_get(id, "tb_world_get_time");
   return w != NULL ? w->time : 0.0;
@@ -268,11 +408,10 @@ tb_counts tb_world_get_counts(tb_world_id id) {
   c.body_count = w->bodies.count;
   c.shape_count = w->shapes.count;
   c.step_count = w->step_count;
-  for (int i = 0; i < w->bodies.high; ++i) {
-    if (!tb_pool_alive(&w->bodies, i)) continue;
-    const tb_body* b = tb_body_at(w, i);
-    if (b->enabled && b->type != TB_STATIC_BODY) c.awake_body_count += 1;
-  }
+  c.awake_body_count = w->awake_count;
+  c.joint_count = w->joints.count;
+  c.awake_contact_count = w->step_contact_count;
+  c.sleeping_island_count = w->islands.count;
   c.contact_count = w->contacts.count;
   for (int i = 0; i < w->contacts.high; ++i)
     if (tb_pool_alive(&w->contacts, i) && (((tb_contact*)tb_pool_at(&w->contacts, i))->flags & TB_CONTACT_TOUCHING))

@@ -7,6 +7,7 @@
 #include "broad_phase.h"
 #include "contact.h"
 #include "error.h"
+#include "joint.h"
 #include "pool.h"
 #include "shape.h"
 
@@ -27,6 +28,8 @@ typedef struct tb_world {
   tb_pool shapes;   /* of tb_shape */
   tb_pool contacts; /* of tb_contact */
   tb_pool chains;   /* of tb_chain */
+  tb_pool joints;   /* of tb_joint */
+  tb_pool islands;  /* of tb_island: sleeping islands */
   tb_broad_phase broad_phase;
   float hit_event_threshold;
   tb_custom_filter_fn* custom_filter;
@@ -36,6 +39,25 @@ typedef struct tb_world {
   tb_mix_fn* friction_mix;
   tb_mix_fn* restitution_mix;
   void* mix_context;
+  /* solver settings (tb_world_def) */
+  float contact_hertz, contact_damping_ratio, contact_push_max_velocity;
+  float joint_hertz, joint_damping_ratio;
+  float restitution_threshold, maximum_linear_speed;
+  bool enable_sleep, enable_continuous, enable_warm_starting;
+  /* the awake set: body indices; body->awake_index is the position here */
+  int* awake;
+  int awake_count, awake_capacity;
+  /* per-step scratch, grown as needed and kept (no allocation in a steady step) */
+  struct tb_solver_body* states;
+  int state_capacity;
+  int* step_contacts; /* touching contacts the solver handles this step */
+  int step_contact_count, step_contact_capacity;
+  struct tb_contact_constraint* constraints;
+  int constraint_capacity;
+  int* step_joints;
+  int step_joint_count, step_joint_capacity;
+  int* scratch; /* island search stack and marks */
+  int scratch_capacity;
   /* events of the last step (cleared when the next one starts) */
   tb_contact_begin_event* begin_events;
   tb_contact_end_event* end_events;
@@ -51,6 +73,8 @@ typedef struct tb_world {
 tb_world* tb_world_get(tb_world_id id, const char* fn);
 tb_body* tb_body_get(tb_body_id id, tb_world** world, const char* fn);
 tb_shape* tb_shape_get(tb_shape_id id, tb_world** world, const char* fn);
+tb_joint* tb_joint_get(tb_joint_id id, tb_world** world, const char* fn);
+tb_joint* tb_joint_get_unlocked(tb_joint_id id, tb_world** world, const char* fn);
 struct tb_chain* tb_chain_get(tb_chain_id id, tb_world** world, const char* fn);
 /* The same, also refusing a world that is inside its step. */
 tb_world* tb_world_get_unlocked(tb_world_id id, const char* fn);
@@ -59,9 +83,28 @@ tb_shape* tb_shape_get_unlocked(tb_shape_id id, tb_world** world, const char* fn
 
 static inline tb_body* tb_body_at(const tb_world* w, int i) { return (tb_body*)tb_pool_at(&w->bodies, i); }
 static inline tb_shape* tb_shape_at(const tb_world* w, int i) { return (tb_shape*)tb_pool_at(&w->shapes, i); }
+static inline tb_joint* tb_joint_at(const tb_world* w, int i) { return (tb_joint*)tb_pool_at(&w->joints, i); }
 
 tb_body_id tb_make_body_id(const tb_world* w, int index);
 tb_shape_id tb_make_shape_id(const tb_world* w, int index);
+tb_joint_id tb_make_joint_id(const tb_world* w, int index);
+
+/* Sleep and the awake set (island.c). Waking a body wakes its sleeping island;
+ * a dynamic or kinematic body joins the awake set, a static one does nothing. */
+void tb_wake_body(tb_world* w, int body);
+/* Takes a body out of the awake set or its sleeping island (before it is
+ * destroyed, disabled or made static). */
+void tb_remove_body_from_sets(tb_world* w, int body);
+/* Adds a newly created or enabled non-static body to the awake set (awake) or
+ * to a fresh sleeping island of its own (asleep). false when out of memory. */
+bool tb_add_body_to_sets(tb_world* w, int body, bool awake);
+void tb_wake_all(tb_world* w);
+/* After the solver: islands that rested for TB_TIME_TO_SLEEP fall asleep. */
+void tb_update_sleep(tb_world* w);
+/* Puts the island of an awake body to sleep now (tb_body_set_awake(false)). */
+void tb_sleep_island_of(tb_world* w, int body);
+void tb_islands_free(tb_world* w);
+size_t tb_island_size(void);
 
 /* Chains of a body go with it (chain.c). */
 void tb_chains_destroy_of_body(tb_world* w, int body);
@@ -70,8 +113,14 @@ void tb_chains_free(tb_world* w);
 /* Shape AABBs and broad-phase proxies follow a body that moved. */
 void tb_body_update_proxies(tb_world* world, int body, tb_vec2 displacement);
 
-/* Free motion of every simulated body over one step (motion.c). Bodies whose new
- * state is not finite keep their old state; returns how many did. */
-int tb_integrate_bodies(tb_world* world, float time_step, int substeps);
+/* Free motion of one dynamic body over a step with the world's integrator
+ * (motion.c). false when the new state is not finite (the body keeps its old one). */
+bool tb_integrate_free_body(tb_world* world, int body, float time_step, int substeps);
+/* The soft-step solver (solver.c): moves the awake bodies over one step;
+ * returns how many got a non-finite state and were left as they were. */
+int tb_solve(tb_world* world, float time_step, int substeps);
+/* Continuous collision (continuous.c): fast bodies and bullets stop at their
+ * first time of impact. */
+void tb_solve_continuous(tb_world* world);
 
 #endif

@@ -1,0 +1,234 @@
+/* Continuous collision (see continuous.h for the contract).
+ *
+ * Each shape of a fast body is swept along the body's motion over the step:
+ * its centre of mass moves linearly from center0 to center and its angle from
+ * angle0 to angle (tb_sweep). Candidates come from the broad-phase trees,
+ * queried with a box that holds the whole swept shape; each is tested with the
+ * conservative-advancement time of impact, which never steps past the first
+ * time the gap between the surfaces falls to the target. The body then goes
+ * back to the earliest such time.
+ *
+ * Why the query box holds the swept shape. A core point at r from the centre
+ * of mass is at c(t) + R(a(t)) r. The centre term is linear in t, so the
+ * point's distance from the straight line between its two end positions (which
+ * the union of the start and end boxes holds) is that of the rotation term
+ * alone: |R(a(t)) r - lerp(R(a1) r, R(a2) r, t)|. With turn d = |a2 - a1| this
+ * is at most |r| d / 2 (each end is at most an arc away: (1 - t) d t + t d
+ * (1 - t) <= d / 2), at most |r| d^2 / 8 per axis (a function that vanishes at
+ * both ends, of second derivative at most |r| d^2) and at most 2 |r|. The box
+ * is grown by |r|max times the least of the three. */
+#include "continuous.h"
+
+#include <float.h>
+
+#include "broad_phase.h"
+#include "contact.h"
+#include "distance.h"
+#include "geometry.h"
+#include "joint.h"
+#include "math_internal.h"
+#include "world.h"
+
+/* A shape closing in on a chain segment by less than this fraction of its
+ * thinnest half-width cannot cross it within the step: the segment's contact
+ * handles it. This keeps a body sliding fast along a chain from stopping at
+ * every joint between segments. */
+#define CHAIN_APPROACH_FRACTION 0.25f
+/* Radius of the core disc swept for a pair that already touches at t = 0, as a
+ * fraction of the shape's thinnest half-width. */
+#define CORE_FRACTION 0.25f
+
+static tb_shape_proxy shape_proxy(const tb_shape* s) {
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE: return tb_make_circle_proxy(&s->geom.circle);
+    case TB_SHAPE_CAPSULE: return tb_make_capsule_proxy(&s->geom.capsule);
+    case TB_SHAPE_SEGMENT: return tb_make_segment_proxy(&s->geom.segment);
+    case TB_SHAPE_CHAIN_SEGMENT: return tb_make_segment_proxy(&s->geom.chain_segment.segment);
+    case TB_SHAPE_POLYGON: break;
+  }
+  return tb_make_polygon_proxy(&s->geom.polygon);
+}
+
+/* Centroid in body coordinates. */
+static tb_vec2 shape_centroid(const tb_shape* s) {
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE: return s->geom.circle.center;
+    case TB_SHAPE_CAPSULE: return tb_lerp(s->geom.capsule.center1, s->geom.capsule.center2, 0.5f);
+    case TB_SHAPE_SEGMENT: return tb_lerp(s->geom.segment.point1, s->geom.segment.point2, 0.5f);
+    case TB_SHAPE_CHAIN_SEGMENT:
+      return tb_lerp(s->geom.chain_segment.segment.point1, s->geom.chain_segment.segment.point2, 0.5f);
+    case TB_SHAPE_POLYGON: break;
+  }
+  return s->geom.polygon.centroid;
+}
+
+/* Thinnest half-width: the least distance from the centroid to the surface
+ * (0 for segments, which have no inside). */
+static float shape_min_extent(const tb_shape* s) {
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE: return s->geom.circle.radius;
+    case TB_SHAPE_CAPSULE: return s->geom.capsule.radius;
+    case TB_SHAPE_SEGMENT:
+    case TB_SHAPE_CHAIN_SEGMENT: return 0.0f;
+    case TB_SHAPE_POLYGON: break;
+  }
+  const tb_polygon* p = &s->geom.polygon;
+  float least = FLT_MAX;
+  for (int i = 0; i < p->count; ++i) least = fminf(least, tb_dot(p->normals[i], tb_sub(p->vertices[i], p->centroid)));
+  return fmaxf(least, 0.0f) + p->radius;
+}
+
+static bool boxes_overlap(tb_aabb a, tb_aabb b) {
+  return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
+}
+
+/* One shape of the fast body being swept. */
+typedef struct sweep_context {
+  tb_world* w;
+  int body;  /* the fast body's slot */
+  int shape; /* the swept shape's slot */
+  const tb_shape* s;
+  tb_shape_proxy proxy;
+  tb_sweep sweep;
+  tb_aabb box; /* holds the shape over the whole sweep */
+  tb_vec2 centroid_local;
+  tb_vec2 centroid1, centroid2; /* world, at t = 0 and t = 1 */
+  float extent;                 /* the shape's thinnest half-width */
+  bool bullet;                  /* candidates may be kinematic or dynamic */
+  float t;                      /* earliest impact so far; 1 = none */
+} sweep_context;
+
+typedef enum toi_kind { TOI_NONE, TOI_IMPACT, TOI_TOUCHING } toi_kind;
+
+/* Time of impact of the swept proxy against a fixed one, searched in [0, t_max). */
+static toi_kind impact(const tb_shape_proxy* fixed, const tb_sweep* fixed_sweep, const tb_shape_proxy* moving,
+                       const tb_sweep* moving_sweep, float t_max, float* t) {
+  tb_toi_input in = {*fixed, *moving, *fixed_sweep, *moving_sweep, t_max, TB_TOI_TARGET, TB_TOI_TOLERANCE};
+  tb_toi_output out;
+  if (tb_time_of_impact(&in, &out) != TB_OK) return TOI_NONE;
+  switch (out.state) {
+    case TB_TOI_SEPARATED: return TOI_NONE;
+    case TB_TOI_OVERLAPPED: return TOI_TOUCHING;
+    case TB_TOI_HIT:
+    case TB_TOI_FAILED: /* t is still a safe time: the gap stays above target up to it */
+      if (out.t > 0.0f) {
+        *t = out.t;
+        return TOI_IMPACT;
+      }
+      return TOI_TOUCHING;
+  }
+  return TOI_NONE;
+}
+
+/* A chain segment is one-sided: the shape must start on its front (left) side
+ * and close in on it far enough to be able to cross it. */
+static bool chain_faces(const sweep_context* sc, const tb_shape* chain, tb_transform xf) {
+  const tb_segment* g = &chain->geom.chain_segment.segment;
+  tb_vec2 p1 = tb_transform_point(xf, g->point1);
+  tb_vec2 n = tb_normalize(tb_left_perp(tb_rotate(xf.q, tb_sub(g->point2, g->point1))));
+  float offset1 = tb_dot(tb_sub(sc->centroid1, p1), n), offset2 = tb_dot(tb_sub(sc->centroid2, p1), n);
+  if (offset1 < 0.0f) return false;
+  return offset1 - offset2 >= CHAIN_APPROACH_FRACTION * sc->extent && offset1 > offset2;
+}
+
+static bool candidate(int32_t proxy, int32_t other_index, void* context) {
+  (void)proxy;
+  sweep_context* sc = context;
+  tb_world* w = sc->w;
+  const tb_shape* o = tb_shape_at(w, other_index);
+  if (o->body == sc->body || o->sensor) return true;
+  const tb_body* ob = tb_body_at(w, o->body);
+  if (ob->type != TB_STATIC_BODY && (!sc->bullet || ob->is_bullet)) return true;
+  if (!tb_filters_collide(sc->s->filter, o->filter) || !tb_shape_types_collide(sc->s->type, o->type)) return true;
+  tb_sweep fixed = {ob->local_center, ob->center, ob->center, ob->angle, ob->angle};
+  tb_transform xf = tb_sweep_transform(&fixed, 0.0f);
+  tb_aabb tight = ob->type == TB_STATIC_BODY ? o->aabb : tb_shape_geom_aabb(o, xf);
+  if (!boxes_overlap(tight, sc->box)) return true;
+  if (o->type == TB_SHAPE_CHAIN_SEGMENT && !chain_faces(sc, o, xf)) return true;
+  if (w->pre_solve != NULL && (sc->s->enable_pre_solve_events || o->enable_pre_solve_events)) return true;
+  if (ob->joint_count > 0 && tb_body_at(w, sc->body)->joint_count > 0 &&
+      !tb_joints_allow_collision(w, sc->body, o->body))
+    return true;
+  if (w->custom_filter != NULL &&
+      !w->custom_filter(tb_make_shape_id(w, sc->shape), tb_make_shape_id(w, other_index), w->custom_filter_context))
+    return true;
+
+  tb_shape_proxy other = shape_proxy(o);
+  float t = sc->t;
+  toi_kind k = impact(&other, &fixed, &sc->proxy, &sc->sweep, sc->t, &t);
+  if (k == TOI_TOUCHING && sc->extent > 0.0f) {
+    /* Already touching: the contact solver owns the pair, but the core must
+     * still not pass through (a bullet grazing a thin wall). */
+    tb_shape_proxy core = tb_make_proxy(&sc->centroid_local, 1, CORE_FRACTION * sc->extent);
+    k = impact(&other, &fixed, &core, &sc->sweep, sc->t, &t);
+  }
+  if (k == TOI_IMPACT && t < sc->t) sc->t = t;
+  return true;
+}
+
+/* Sweeps every non-sensor shape of a fast body; moves it back to the earliest
+ * impact. */
+static void sweep_body(tb_world* w, int body_index, bool bullet) {
+  tb_body* b = tb_body_at(w, body_index);
+  sweep_context sc = {.w = w, .body = body_index, .bullet = bullet, .t = 1.0f};
+  sc.sweep = (tb_sweep){b->local_center, b->center0, b->center, b->angle0, b->angle};
+  tb_transform xf1 = tb_sweep_transform(&sc.sweep, 0.0f), xf2 = tb_sweep_transform(&sc.sweep, 1.0f);
+  float turn = fabsf(b->angle - b->angle0);
+  float growth = fminf(fminf(0.5f * turn, 0.125f * turn * turn), 2.0f);
+  for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
+    const tb_shape* s = tb_shape_at(w, i);
+    if (s->sensor) continue;
+    sc.shape = i;
+    sc.s = s;
+    sc.proxy = shape_proxy(s);
+    sc.centroid_local = shape_centroid(s);
+    sc.centroid1 = tb_transform_point(xf1, sc.centroid_local);
+    sc.centroid2 = tb_transform_point(xf2, sc.centroid_local);
+    sc.extent = shape_min_extent(s);
+    float reach2 = 0.0f;
+    for (int k = 0; k < sc.proxy.count; ++k)
+      reach2 = fmaxf(reach2, tb_distance_sq(sc.proxy.points[k], b->local_center));
+    float grow = growth * sqrtf(reach2);
+    tb_aabb a1 = tb_shape_geom_aabb(s, xf1), a2 = tb_shape_geom_aabb(s, xf2);
+    sc.box = (tb_aabb){{fminf(a1.lower.x, a2.lower.x) - grow, fminf(a1.lower.y, a2.lower.y) - grow},
+                       {fmaxf(a1.upper.x, a2.upper.x) + grow, fmaxf(a1.upper.y, a2.upper.y) + grow}};
+    /* The tree holds each proxy's category bits: the mask prunes, unless a
+     * group (which overrides the bits) may be shared. */
+    uint64_t mask = s->filter.group_index == 0 ? s->filter.mask_bits : UINT64_MAX;
+    tb_tree_query(&w->broad_phase.trees[TB_STATIC_BODY], sc.box, mask, candidate, &sc);
+    if (bullet) {
+      tb_tree_query(&w->broad_phase.trees[TB_KINEMATIC_BODY], sc.box, mask, candidate, &sc);
+      tb_tree_query(&w->broad_phase.trees[TB_DYNAMIC_BODY], sc.box, mask, candidate, &sc);
+    }
+  }
+  if (sc.t < 1.0f) {
+    float t = sc.t;
+    b->center = tb_lerp(b->center0, b->center, t);
+    b->angle = b->angle0 + t * (b->angle - b->angle0);
+    tb_body_sync_transform(b);
+  }
+}
+
+void tb_solve_continuous(tb_world* w) {
+  if (!w->enable_continuous) return;
+  /* Fast bodies against the static world first, then bullets, which also see
+   * where the other moving bodies ended. */
+  int bullets = 0;
+  for (int i = 0; i < w->awake_count; ++i) {
+    int index = w->awake[i];
+    const tb_body* b = tb_body_at(w, index);
+    if (b->type != TB_DYNAMIC_BODY || !(b->is_fast || b->is_bullet)) continue;
+    if (b->is_bullet) {
+      bullets += 1;
+      continue;
+    }
+    sweep_body(w, index, false);
+  }
+  for (int i = 0; i < w->awake_count && bullets > 0; ++i) {
+    int index = w->awake[i];
+    const tb_body* b = tb_body_at(w, index);
+    if (b->type != TB_DYNAMIC_BODY || !b->is_bullet) continue;
+    bullets -= 1;
+    sweep_body(w, index, true);
+  }
+}

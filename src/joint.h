@@ -1,0 +1,77 @@
+/* Joints: the pool, body joint lists and the constraint functions the solver
+ * calls (prepare once per step, then warm start and solve in each substep). */
+#ifndef TB_JOINT_H
+#define TB_JOINT_H
+
+#include "solver.h"
+#include "tumble.h"
+
+typedef struct tb_joint_edge {
+  int body;
+  int prev, next; /* edge keys (joint * 2 + side) in the body's list, -1 at the ends */
+} tb_joint_edge;
+
+typedef struct tb_joint {
+  tb_joint_type type;
+  tb_joint_edge edges[2]; /* [0] body A, [1] body B */
+  bool collide_connected;
+  void* user_data;
+  /* the joint module's own fields follow (type parameters, solver scratch, impulses) */
+
+  /* Definition. Anchors are relative to each body's origin. */
+  tb_vec2 local_anchor_a, local_anchor_b;
+  tb_vec2 local_axis_a;                       /* prismatic, wheel: unit axis in A */
+  float reference_angle;                      /* revolute, prismatic, weld; motor joint: angular_offset */
+  float length;                               /* distance: rest length */
+  float lower, upper;                         /* limits: angle, translation, or min/max length */
+  float hertz, damping_ratio;                 /* the spring (weld: linear; mouse: its pull) */
+  float angular_hertz, angular_damping_ratio; /* weld */
+  float motor_speed;
+  float max_motor;         /* force (N) or torque (N m) of the motor */
+  float max_force;         /* mouse, motor joint */
+  float max_torque;        /* motor joint */
+  float correction_factor; /* motor joint */
+  tb_vec2 target;          /* mouse: world target */
+  bool enable_spring, enable_limit, enable_motor;
+
+  /* Accumulated impulses of the last substep, kept for warm starting. */
+  tb_vec2 linear_impulse; /* point constraints (revolute, weld, mouse, motor joint) */
+  float angular_impulse;  /* weld, prismatic, motor joint */
+  float axial_impulse;    /* distance: rigid length; prismatic, wheel: perpendicular */
+  float spring_impulse, motor_impulse, lower_impulse, upper_impulse;
+  float last_h; /* substep of the impulses (rescaled when the step size changes) */
+
+  /* Step scratch, set by tb_joint_prepare. */
+  int solver_a, solver_b;   /* indices into ctx->states */
+  bool skip;                /* no dynamic body, or a body is disabled */
+  tb_vec2 frame_a, frame_b; /* anchors relative to the centres, world axes, step start */
+  tb_vec2 delta_center;     /* centre of B minus centre of A (mouse: minus target) */
+  float delta_angle;        /* angle_b - angle_a - reference angle at step start */
+  tb_vec2 axis;             /* world axis of A at step start */
+  tb_softness spring_softness, angular_softness;
+  float correction_rate; /* motor joint: bias per unit error per second */
+
+  /* What the getters report about the last step. */
+  tb_vec2 force;
+  float torque;
+  float motor_output; /* motor torque (N m) or force (N) */
+} tb_joint;
+
+struct tb_world;
+
+/* Removes every joint of a body (when the body is destroyed). */
+void tb_joints_destroy_of_body(struct tb_world* w, int body);
+/* false when a joint with collide_connected == false links the two bodies. */
+bool tb_joints_allow_collision(const struct tb_world* w, int body_a, int body_b);
+
+/* Solver entry points, for joints with at least one awake body.
+ * prepare: anchors, effective masses, softness (once per step);
+ * warm_start: apply the accumulated impulses (each substep);
+ * solve: one iteration; use_bias = false in the relax pass;
+ * store: after the substeps, keep what the getters report. */
+void tb_joint_prepare(struct tb_world* w, int joint, tb_step_context* ctx);
+void tb_joint_warm_start(struct tb_world* w, int joint, tb_step_context* ctx);
+void tb_joint_solve(struct tb_world* w, int joint, tb_step_context* ctx, bool use_bias);
+void tb_joint_store(struct tb_world* w, int joint, const tb_step_context* ctx);
+
+#endif

@@ -1,0 +1,62 @@
+/* The soft-step solver's shared state: the awake bodies' solver data (one
+ * contiguous array, indexed by the body's awake_index), soft-constraint
+ * coefficients and the per-step context handed to contacts and joints. */
+#ifndef TB_SOLVER_H
+#define TB_SOLVER_H
+
+#include <stdbool.h>
+
+#include "tumble.h"
+
+/* What the solver moves: velocities plus the motion since the step began.
+ * Positions are never summed into world coordinates inside the step, so a
+ * scene at 65 km solves with the same precision as one at the origin. */
+typedef struct tb_solver_body {
+  tb_vec2 v;        /* linear velocity of the centre of mass */
+  float w;          /* angular velocity */
+  float inv_mass;   /* 0 for static, kinematic */
+  float inv_inertia;
+  float da;   /* angle turned since the step began (exact scalar sum of h w) */
+  tb_vec2 dp; /* displacement of the centre of mass since the step began */
+  tb_rot dq;  /* rotation since the step began, as a unit complex number */
+} tb_solver_body;
+
+/* A soft constraint (Catto, "Solver2D"): a spring of frequency f and damping
+ * ratio z over a substep h. With w = 2 pi f,
+ *   bias_rate = w / (2 z + h w), mass_scale = h w (2 z + h w) / (1 + h w (2 z + h w)),
+ *   impulse_scale = 1 / (1 + h w (2 z + h w)).
+ * The impulse of a constraint with effective mass m, velocity error v_err and
+ * position error C is  -m mass_scale (v_err + bias_rate C) - impulse_scale J_acc. */
+typedef struct tb_softness {
+  float bias_rate, mass_scale, impulse_scale;
+} tb_softness;
+
+tb_softness tb_make_softness(float hertz, float damping_ratio, float h);
+/* The rigid limit (hertz 0 means rigid: no bias, full mass). */
+static inline tb_softness tb_rigid_softness(void) { return (tb_softness){0.0f, 1.0f, 0.0f}; }
+
+typedef struct tb_step_context {
+  float dt, inv_dt; /* the whole step */
+  float h, inv_h;   /* one substep */
+  int substeps;
+  tb_softness contact_softness; /* dynamic against dynamic */
+  tb_softness static_softness;  /* dynamic against static or kinematic: stiffer */
+  tb_softness joint_softness;
+  float contact_push_max_velocity;
+  float restitution_threshold;
+  float max_linear_speed;
+  bool enable_warm_starting;
+  /* Solver bodies: the awake bodies in awake order, then one static dummy
+   * (zero velocity, zero inverse mass) at static_index that stands for every
+   * body that is not awake (static, or asleep). */
+  tb_solver_body* states;
+  int static_index;
+} tb_step_context;
+
+struct tb_world;
+struct tb_body;
+
+/* The solver index of a body: its awake_index, or the static dummy. */
+int tb_solver_index(const struct tb_world* w, int body);
+
+#endif
