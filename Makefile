@@ -83,9 +83,16 @@ tests: $(UNIT_BIN) $(REF_BIN)
 
 # The deps check runs first, alone; then the suites build and run.
 test: deps-test
-	@$(MAKE) --no-print-directory tests
+	@$(MAKE) --no-print-directory tests $(BUILD)/tools/determinism
+	@$(MAKE) --no-print-directory DEBUG=1 build/debug/tools/determinism
 	@tools/run_tests.sh $(UNIT_BIN) $(REF_BIN)
 	@tools/check_readme_example.sh $(BUILD)
+	@tools/check_determinism.sh $(BUILD)/tools/determinism build/debug/tools/determinism
+
+# One scene hashed after 1,000 steps; make test compares an -O0 and an -O2 build.
+$(BUILD)/tools/determinism: $(BUILD)/obj/tools/determinism.o $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(EXTRA_CFLAGS) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
 
 # Same suites with AddressSanitizer and UndefinedBehaviorSanitizer, in-process
 # (CK_FORK=no) so that LeakSanitizer sees every test's allocations.
@@ -115,12 +122,32 @@ $(BENCH)/bench_tree_b2: tools/bench_tree_b2.cpp
 $(BENCH)/bench_manifold: $(BUILD)/obj/tools/bench_manifold.o $(BUILD)/obj/tools/bench_manifold_b2.o $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CXX) -o $@ $^ -lbox2d $(LDLIBS_ALL)
+# Dynamics bench: the six performance scenes of demos/scenes (large_pyramid,
+# many_pyramids, joint_grid, rain, smash, tumbler), tumble at 60 Hz / 4 substeps
+# and Box2D 2.4.1 at 8/3 and 4/2 iterations (see tools/bench_dynamics.c).
+# `make bench-quick` runs them at scale 0.5, one run each (about a minute).
+# Extra options go through BENCH_ARGS, e.g. BENCH_ARGS="--csv build/bench/dynamics.csv".
+$(BENCH)/bench_dynamics: $(BUILD)/obj/tools/bench_dynamics.o $(BUILD)/obj/demos/scenes/scenes.o $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $^ $(LDLIBS_ALL)
+$(BENCH)/bench_dynamics_b2: tools/bench_dynamics_b2.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS_ALL) -o $@ $< -lbox2d
 
+.PHONY: bench-quick
 bench: deps-test
-	@$(MAKE) --no-print-directory $(BENCH)/bench_tree $(BENCH)/bench_tree_b2 $(BENCH)/bench_manifold
+	@$(MAKE) --no-print-directory $(BENCH)/bench_tree $(BENCH)/bench_tree_b2 $(BENCH)/bench_manifold \
+	  $(BENCH)/bench_dynamics $(BENCH)/bench_dynamics_b2
 	$(BENCH)/bench_tree
 	$(BENCH)/bench_tree_b2
 	$(BENCH)/bench_manifold
+	$(BENCH)/bench_dynamics $(BENCH_ARGS)
+	$(BENCH)/bench_dynamics_b2 $(BENCH_ARGS)
+
+bench-quick: deps-test
+	@$(MAKE) --no-print-directory $(BENCH)/bench_dynamics $(BENCH)/bench_dynamics_b2
+	$(BENCH)/bench_dynamics --quick $(BENCH_ARGS)
+	$(BENCH)/bench_dynamics_b2 --quick $(BENCH_ARGS)
 
 # ---- install -------------------------------------------------------------------
 $(BUILD)/tumble.pc: tools/tumble.pc.in Makefile

@@ -1,19 +1,11 @@
-/* The soft step (Catto, "Solver2D" and Box2D v3's design; written from the
- * published description): collide once per step, then per substep h
+/* The soft step (Catto, "Solver2D", and Box2D v3's design, written from their
+ * published descriptions): collide once per step, then in each substep h
  *   integrate velocities -> warm start -> solve (soft, with position bias)
- *   -> integrate positions -> relax (solve without bias),
+ *   -> integrate positions -> relax (solve again without bias),
  * and after the substeps apply restitution and keep the impulses for the next
- * step's warm start.
- *
- * Contacts are soft constraints. For a point with current separation s < 0 the
- * normal impulse is  -m_n (mass_scale (v_n + bias) ) - impulse_scale P_n  with
- * bias = max(bias_rate s, -push_max): a damped spring that pushes overlap out
- * at a bounded speed, unconditionally stable for any h. A point still apart
- * (s > 0) is speculative: it only removes the approach speed that would close
- * the gap within the substep (bias = s / h), which stops fast bodies without
- * sweeping. The separation is not recomputed by collision inside the step: it
- * is s = s0 + n . ((dp_B + q_B r_B) - (dp_A + q_A r_A) - (r_B - r_A)), from
- * the motion (dp, dq) of each body since the step began. */
+ * step's warm start (contact_solver.c holds the contact constraints, joint.c
+ * the joints). Bodies move in delta positions from the step start and are
+ * placed in world coordinates once, at the end. */
 #include "solver.h"
 
 #include <math.h>
@@ -37,26 +29,6 @@ int tb_solver_index(const tb_world* w, int body) {
   int i = tb_body_at(w, body)->awake_index;
   return i >= 0 ? i : w->awake_count;
 }
-
-typedef struct tb_constraint_point {
-  tb_vec2 ra, rb;        /* anchors from each centre of mass, world-oriented, at step start */
-  float base_separation; /* s0 - n . (rb - ra) */
-  float relative_velocity;
-  float normal_mass, tangent_mass;
-  float normal_impulse, tangent_impulse, max_normal_impulse;
-} tb_constraint_point;
-
-typedef struct tb_contact_constraint {
-  int a, b; /* solver bodies */
-  int contact;
-  int point_count;
-  tb_vec2 normal;
-  float friction, restitution, rolling_resistance, tangent_speed;
-  float inv_mass_a, inv_i_a, inv_mass_b, inv_i_b;
-  float rolling_mass, rolling_impulse;
-  tb_softness softness;
-  tb_constraint_point points[2];
-} tb_contact_constraint;
 
 /* Per awake body, per step: what the velocity integration adds (constant over
  * the step unless a force field is set). */
@@ -130,222 +102,6 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
   }
 }
 
-/* ---- contacts ---------------------------------------------------------------- */
-
-static void prepare_contacts(tb_world* w, tb_step_context* ctx) {
-  tb_contact_constraint* cs = w->constraints;
-  const tb_solver_body* states = ctx->states;
-  for (int k = 0; k < w->step_contact_count; ++k) {
-    int index = w->step_contacts[k];
-    const tb_contact* c = (const tb_contact*)tb_pool_at(&w->contacts, index);
-    tb_contact_constraint* cc = &cs[k];
-    const tb_body* ba = tb_body_at(w, c->edges[0].body);
-    const tb_body* bb = tb_body_at(w, c->edges[1].body);
-    int ia = tb_solver_index(w, c->edges[0].body), ib = tb_solver_index(w, c->edges[1].body);
-    const tb_solver_body* sa = &states[ia];
-    const tb_solver_body* sb = &states[ib];
-    float ma = sa->inv_mass, mb = sb->inv_mass, ja = sa->inv_inertia, jb = sb->inv_inertia;
-    cc->a = ia;
-    cc->b = ib;
-    cc->contact = index;
-    cc->normal = c->manifold.normal;
-    cc->friction = c->friction;
-    cc->restitution = c->restitution;
-    cc->rolling_resistance = c->rolling_resistance;
-    cc->tangent_speed = c->tangent_speed;
-    cc->inv_mass_a = ma;
-    cc->inv_i_a = ja;
-    cc->inv_mass_b = mb;
-    cc->inv_i_b = jb;
-    cc->rolling_mass = ja + jb > 0.0f ? 1.0f / (ja + jb) : 0.0f;
-    cc->rolling_impulse = ctx->enable_warm_starting ? c->rolling_impulse : 0.0f;
-    /* against a body that does not respond (static, kinematic) the contact is stiffer */
-    bool rigid_other = ba->type != TB_DYNAMIC_BODY || bb->type != TB_DYNAMIC_BODY;
-    cc->softness = rigid_other ? ctx->static_softness : ctx->contact_softness;
-    cc->point_count = c->manifold.point_count;
-    tb_vec2 n = cc->normal;
-    tb_vec2 t = tb_right_perp(n);
-    for (int p = 0; p < cc->point_count; ++p) {
-      const tb_manifold_point* mp = &c->manifold.points[p];
-      tb_constraint_point* cp = &cc->points[p];
-      cp->ra = tb_sub(mp->point, ba->center);
-      cp->rb = tb_sub(mp->point, bb->center);
-      cp->base_separation = mp->separation - tb_dot(tb_sub(cp->rb, cp->ra), n);
-      float rna = tb_cross(cp->ra, n), rnb = tb_cross(cp->rb, n);
-      float kn = ma + mb + ja * rna * rna + jb * rnb * rnb;
-      cp->normal_mass = kn > 0.0f ? 1.0f / kn : 0.0f;
-      float rta = tb_cross(cp->ra, t), rtb = tb_cross(cp->rb, t);
-      float kt = ma + mb + ja * rta * rta + jb * rtb * rtb;
-      cp->tangent_mass = kt > 0.0f ? 1.0f / kt : 0.0f;
-      tb_vec2 va = tb_add(sa->v, tb_cross_sv(sa->w, cp->ra));
-      tb_vec2 vb = tb_add(sb->v, tb_cross_sv(sb->w, cp->rb));
-      cp->relative_velocity = tb_dot(n, tb_sub(vb, va));
-      cp->normal_impulse = ctx->enable_warm_starting ? mp->normal_impulse : 0.0f;
-      cp->tangent_impulse = ctx->enable_warm_starting ? mp->tangent_impulse : 0.0f;
-      cp->max_normal_impulse = 0.0f;
-    }
-  }
-}
-
-static void warm_start_contacts(tb_world* w, tb_step_context* ctx) {
-  tb_solver_body* states = ctx->states;
-  for (int k = 0; k < w->step_contact_count; ++k) {
-    tb_contact_constraint* cc = &w->constraints[k];
-    tb_solver_body* sa = &states[cc->a];
-    tb_solver_body* sb = &states[cc->b];
-    tb_vec2 va = sa->v, vb = sb->v;
-    float wa = sa->w, wb = sb->w;
-    tb_vec2 n = cc->normal, t = tb_right_perp(n);
-    for (int p = 0; p < cc->point_count; ++p) {
-      const tb_constraint_point* cp = &cc->points[p];
-      tb_vec2 P = tb_add(tb_scale(cp->normal_impulse, n), tb_scale(cp->tangent_impulse, t));
-      wa -= cc->inv_i_a * tb_cross(cp->ra, P);
-      va = tb_mul_add(va, -cc->inv_mass_a, P);
-      wb += cc->inv_i_b * tb_cross(cp->rb, P);
-      vb = tb_mul_add(vb, cc->inv_mass_b, P);
-    }
-    wa -= cc->inv_i_a * cc->rolling_impulse;
-    wb += cc->inv_i_b * cc->rolling_impulse;
-    sa->v = va;
-    sa->w = wa;
-    sb->v = vb;
-    sb->w = wb;
-  }
-}
-
-static void solve_contacts(tb_world* w, tb_step_context* ctx, bool use_bias) {
-  tb_solver_body* states = ctx->states;
-  float inv_h = ctx->inv_h;
-  float push = ctx->contact_push_max_velocity;
-  for (int k = 0; k < w->step_contact_count; ++k) {
-    tb_contact_constraint* cc = &w->constraints[k];
-    tb_solver_body* sa = &states[cc->a];
-    tb_solver_body* sb = &states[cc->b];
-    tb_vec2 va = sa->v, vb = sb->v;
-    float wa = sa->w, wb = sb->w;
-    const float ma = cc->inv_mass_a, mb = cc->inv_mass_b, ja = cc->inv_i_a, jb = cc->inv_i_b;
-    tb_vec2 n = cc->normal, t = tb_right_perp(n);
-    tb_vec2 dp = tb_sub(sb->dp, sa->dp);
-    tb_rot qa = sa->dq, qb = sb->dq;
-    float total_normal = 0.0f;
-
-    /* non-penetration */
-    for (int p = 0; p < cc->point_count; ++p) {
-      tb_constraint_point* cp = &cc->points[p];
-      tb_vec2 d = tb_add(dp, tb_sub(tb_rotate(qb, cp->rb), tb_rotate(qa, cp->ra)));
-      float s = tb_dot(d, n) + cp->base_separation;
-      float bias = 0.0f, mass_scale = 1.0f, impulse_scale = 0.0f;
-      if (s > 0.0f) {
-        bias = s * inv_h; /* speculative: close the gap, no more */
-      } else if (use_bias) {
-        bias = cc->softness.bias_rate * s;
-        if (bias < -push) bias = -push;
-        mass_scale = cc->softness.mass_scale;
-        impulse_scale = cc->softness.impulse_scale;
-      }
-      tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, cp->rb)), tb_add(va, tb_cross_sv(wa, cp->ra)));
-      float vn = tb_dot(dv, n);
-      float impulse = -cp->normal_mass * mass_scale * (vn + bias) - impulse_scale * cp->normal_impulse;
-      float total = cp->normal_impulse + impulse;
-      if (total < 0.0f) total = 0.0f;
-      impulse = total - cp->normal_impulse;
-      cp->normal_impulse = total;
-      if (total > cp->max_normal_impulse) cp->max_normal_impulse = total;
-      total_normal += total;
-      tb_vec2 P = tb_scale(impulse, n);
-      va = tb_mul_add(va, -ma, P);
-      wa -= ja * tb_cross(cp->ra, P);
-      vb = tb_mul_add(vb, mb, P);
-      wb += jb * tb_cross(cp->rb, P);
-    }
-
-    /* Coulomb friction: |P_t| <= mu P_n per point, driving the relative
-     * tangential speed towards the surfaces' own (conveyor) speed */
-    for (int p = 0; p < cc->point_count; ++p) {
-      tb_constraint_point* cp = &cc->points[p];
-      tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, cp->rb)), tb_add(va, tb_cross_sv(wa, cp->ra)));
-      float vt = tb_dot(dv, t);
-      float impulse = -cp->tangent_mass * (vt - cc->tangent_speed);
-      float limit = cc->friction * cp->normal_impulse;
-      float total = cp->tangent_impulse + impulse;
-      if (total < -limit) total = -limit;
-      if (total > limit) total = limit;
-      impulse = total - cp->tangent_impulse;
-      cp->tangent_impulse = total;
-      tb_vec2 P = tb_scale(impulse, t);
-      va = tb_mul_add(va, -ma, P);
-      wa -= ja * tb_cross(cp->ra, P);
-      vb = tb_mul_add(vb, mb, P);
-      wb += jb * tb_cross(cp->rb, P);
-    }
-
-    /* rolling resistance: an angular impulse up to rr * radius * normal impulse */
-    if (cc->rolling_resistance > 0.0f) {
-      float limit = cc->rolling_resistance * total_normal;
-      float impulse = -cc->rolling_mass * (wb - wa);
-      float total = cc->rolling_impulse + impulse;
-      if (total < -limit) total = -limit;
-      if (total > limit) total = limit;
-      impulse = total - cc->rolling_impulse;
-      cc->rolling_impulse = total;
-      wa -= ja * impulse;
-      wb += jb * impulse;
-    }
-    sa->v = va;
-    sa->w = wa;
-    sb->v = vb;
-    sb->w = wb;
-  }
-}
-
-/* Newton's restitution on the points that approached faster than the
- * threshold and pushed during the step: v_n' = -e v_n(before). */
-static void apply_restitution(tb_world* w, tb_step_context* ctx) {
-  tb_solver_body* states = ctx->states;
-  float threshold = ctx->restitution_threshold;
-  for (int k = 0; k < w->step_contact_count; ++k) {
-    tb_contact_constraint* cc = &w->constraints[k];
-    if (cc->restitution == 0.0f) continue;
-    tb_solver_body* sa = &states[cc->a];
-    tb_solver_body* sb = &states[cc->b];
-    tb_vec2 va = sa->v, vb = sb->v;
-    float wa = sa->w, wb = sb->w;
-    tb_vec2 n = cc->normal;
-    for (int p = 0; p < cc->point_count; ++p) {
-      tb_constraint_point* cp = &cc->points[p];
-      if (cp->relative_velocity > -threshold || cp->max_normal_impulse == 0.0f) continue;
-      tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, cp->rb)), tb_add(va, tb_cross_sv(wa, cp->ra)));
-      float vn = tb_dot(dv, n);
-      float impulse = -cp->normal_mass * (vn + cc->restitution * cp->relative_velocity);
-      float total = cp->normal_impulse + impulse;
-      if (total < 0.0f) total = 0.0f;
-      impulse = total - cp->normal_impulse;
-      cp->normal_impulse = total;
-      tb_vec2 P = tb_scale(impulse, n);
-      va = tb_mul_add(va, -cc->inv_mass_a, P);
-      wa -= cc->inv_i_a * tb_cross(cp->ra, P);
-      vb = tb_mul_add(vb, cc->inv_mass_b, P);
-      wb += cc->inv_i_b * tb_cross(cp->rb, P);
-    }
-    sa->v = va;
-    sa->w = wa;
-    sb->v = vb;
-    sb->w = wb;
-  }
-}
-
-static void store_impulses(tb_world* w) {
-  for (int k = 0; k < w->step_contact_count; ++k) {
-    const tb_contact_constraint* cc = &w->constraints[k];
-    tb_contact* c = (tb_contact*)tb_pool_at(&w->contacts, cc->contact);
-    for (int p = 0; p < cc->point_count; ++p) {
-      c->manifold.points[p].normal_impulse = cc->points[p].normal_impulse;
-      c->manifold.points[p].tangent_impulse = cc->points[p].tangent_impulse;
-    }
-    c->rolling_impulse = cc->rolling_impulse;
-  }
-}
-
 /* ---- the step ------------------------------------------------------------------ */
 
 /* Joints of the awake bodies, each once (from its lower awake index). */
@@ -377,9 +133,7 @@ static bool reserve_scratch(tb_world* w) {
   int n = w->awake_count + 1;
   size_t per = sizeof(tb_solver_body) + sizeof(tb_body_motion);
   int need = (int)(((size_t)n * per + sizeof(tb_solver_body) - 1) / sizeof(tb_solver_body));
-  if (!tb_array_reserve((void**)&w->states, &w->state_capacity, need, sizeof(tb_solver_body))) return false;
-  return tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, w->step_contact_count + 1,
-                          sizeof(tb_contact_constraint));
+  return tb_array_reserve((void**)&w->states, &w->state_capacity, need, sizeof(tb_solver_body));
 }
 
 /* Whether a body has a joint or a touching contact the solver handles. */
@@ -446,23 +200,22 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     }
   }
 
-  prepare_contacts(w, &ctx);
+  if (!tb_contact_solver_prepare(w, &ctx)) return 0; /* out of memory: the step is skipped */
   for (int k = 0; k < w->step_joint_count; ++k) tb_joint_prepare(w, w->step_joints[k], &ctx);
 
   for (int sub = 0; sub < substeps; ++sub) {
     integrate_velocities(w, &ctx, motions, w->time + (double)sub * h);
     if (ctx.enable_warm_starting) {
       for (int k = 0; k < w->step_joint_count; ++k) tb_joint_warm_start(w, w->step_joints[k], &ctx);
-      warm_start_contacts(w, &ctx);
+      tb_contact_solver_warm_start(w, &ctx);
     }
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, true);
-    solve_contacts(w, &ctx, true);
+    tb_contact_solver_solve(w, &ctx, true);
     integrate_positions(w, &ctx, motions);
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, false);
-    solve_contacts(w, &ctx, false);
+    tb_contact_solver_solve(w, &ctx, false);
   }
-  apply_restitution(w, &ctx);
-  store_impulses(w);
+  tb_contact_solver_finish(w, &ctx);
   for (int k = 0; k < w->step_joint_count; ++k) tb_joint_store(w, w->step_joints[k], &ctx);
 
   /* finish: positions from the step start plus the motion; sleep clocks */

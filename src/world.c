@@ -227,6 +227,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   free(w->states);
   free(w->step_contacts);
   free(w->constraints);
+  free(w->wide);
   free(w->step_joints);
   free(w->scratch);
   tb_broad_phase_free(&w->broad_phase);

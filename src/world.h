@@ -8,6 +8,7 @@
 #include "contact.h"
 #include "error.h"
 #include "joint.h"
+#include "solver.h"
 #include "pool.h"
 #include "shape.h"
 
@@ -52,8 +53,12 @@ typedef struct tb_world {
   int state_capacity;
   int* step_contacts; /* touching contacts the solver handles this step */
   int step_contact_count, step_contact_capacity;
-  struct tb_contact_constraint* constraints;
+  void* constraints; /* tb_contact_constraint (contact_solver.c) */
   int constraint_capacity;
+  void* wide; /* coloured blocks of four contacts */
+  int wide_capacity, wide_count;
+  int* overflow; /* constraints solved one by one (no free colour) */
+  int overflow_count;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
   int* scratch; /* island search stack and marks */
@@ -119,6 +124,13 @@ bool tb_integrate_free_body(tb_world* world, int body, float time_step, int subs
 /* The soft-step solver (solver.c): moves the awake bodies over one step;
  * returns how many got a non-finite state and were left as they were. */
 int tb_solve(tb_world* world, float time_step, int substeps);
+/* The contact constraints of a step (contact_solver.c): prepare (false when
+ * out of memory), then per substep warm start and solve, then finish
+ * (restitution, impulses kept for the next step). */
+bool tb_contact_solver_prepare(tb_world* w, struct tb_step_context* ctx);
+void tb_contact_solver_warm_start(tb_world* w, struct tb_step_context* ctx);
+void tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias);
+void tb_contact_solver_finish(tb_world* w, struct tb_step_context* ctx);
 /* Continuous collision (continuous.c): fast bodies and bullets stop at their
  * first time of impact. */
 void tb_solve_continuous(tb_world* world);
