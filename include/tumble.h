@@ -165,7 +165,8 @@ typedef struct tb_body_state {
 typedef void tb_force_field_fn(double time, const tb_body_state* state, void* context, tb_vec2* force, float* torque);
 
 /* Decides whether two shapes may collide, after the filter bits (optional). It is
- * called when the broad phase finds a new pair; it must not change the world. */
+ * called when the broad phase finds a new pair and when the continuous pass
+ * sweeps a fast body past a shape; it must not change the world. */
 typedef bool tb_custom_filter_fn(tb_shape_id a, tb_shape_id b, void* context);
 
 struct tb_manifold;

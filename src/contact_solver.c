@@ -12,8 +12,12 @@
  * point and drives the tangential speed to the surfaces' own (conveyor)
  * speed; rolling resistance clamps an angular impulse to rr * sum P_n.
  * The separation is not collided again inside the step: with each body's
- * motion since the step began (dp, and rotation dq),
- *   s = s0 + n . ((dp_B + dq_B r_B) - (dp_A + dq_A r_A) - (r_B - r_A)).
+ * motion since the step began (displacement dp, angle da),
+ *   s = s0 + n . ((dp_B + da_B x r_B) - (dp_A + da_A x r_A)),
+ * the anchors' motion to first order in the angle. The exact rotation of the
+ * anchor would be wrong for round shapes: a rolling ball's contact point is
+ * not a material point, and rotating it (r (1 - cos da) upwards) would read as
+ * separation and let the ball sink into what it rolls on.
  *
  * Speed: constraints are coloured so that no two of one colour share a
  * dynamic body, and each colour is solved four contacts at a time with GCC
@@ -41,7 +45,7 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
 
 typedef struct tb_constraint_point {
   tb_vec2 ra, rb;        /* anchors from each centre of mass, world-oriented, at step start */
-  float base_separation; /* s0 - n . (rb - ra) */
+  float base_separation; /* s0, the separation at the step start */
   float relative_velocity;
   float normal_mass, tangent_mass;
   float normal_impulse, tangent_impulse, max_normal_impulse;
@@ -120,7 +124,7 @@ static void prepare_one(tb_world* w, const tb_step_context* ctx, int index, tb_c
     const tb_manifold_point* mp = &c->manifold.points[p];
     cp->ra = tb_sub(mp->point, ba->center);
     cp->rb = tb_sub(mp->point, bb->center);
-    cp->base_separation = mp->separation - tb_dot(tb_sub(cp->rb, cp->ra), n);
+    cp->base_separation = mp->separation;
     float rna = tb_cross(cp->ra, n), rnb = tb_cross(cp->rb, n);
     float kn = ma + mb + ja * rna * rna + jb * rnb * rnb;
     cp->normal_mass = kn > 0.0f ? 1.0f / kn : 0.0f;
@@ -279,11 +283,10 @@ static void solve_one(tb_contact_constraint* cc, tb_solver_body* states, float i
   const float ma = cc->inv_mass_a, mb = cc->inv_mass_b, ja = cc->inv_i_a, jb = cc->inv_i_b;
   tb_vec2 n = cc->normal, t = tb_right_perp(n);
   tb_vec2 dp = tb_sub(sb->dp, sa->dp);
-  tb_rot qa = sa->dq, qb = sb->dq;
   float total_normal = 0.0f;
   for (int p = 0; p < 2; ++p) {
     tb_constraint_point* cp = &cc->points[p];
-    tb_vec2 d = tb_add(dp, tb_sub(tb_rotate(qb, cp->rb), tb_rotate(qa, cp->ra)));
+    tb_vec2 d = tb_add(dp, tb_sub(tb_cross_sv(sb->da, cp->rb), tb_cross_sv(sa->da, cp->ra)));
     float s = tb_dot(d, n) + cp->base_separation;
     float bias = 0.0f, mass_scale = 1.0f, impulse_scale = 0.0f;
     if (s > 0.0f) {
@@ -345,15 +348,14 @@ static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return blend(a > b, a, b); }
 static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return blend(a < b, a, b); }
 
 typedef struct wide_body {
-  tb_f4 vx, vy, w, dpx, dpy, qc, qs;
+  tb_f4 vx, vy, w, dpx, dpy, da;
 } wide_body;
 
 static inline wide_body gather(const tb_solver_body* states, const int32_t* idx) {
   const tb_solver_body *s0 = &states[idx[0]], *s1 = &states[idx[1]], *s2 = &states[idx[2]], *s3 = &states[idx[3]];
   return (wide_body){{s0->v.x, s1->v.x, s2->v.x, s3->v.x},     {s0->v.y, s1->v.y, s2->v.y, s3->v.y},
                      {s0->w, s1->w, s2->w, s3->w},             {s0->dp.x, s1->dp.x, s2->dp.x, s3->dp.x},
-                     {s0->dp.y, s1->dp.y, s2->dp.y, s3->dp.y}, {s0->dq.c, s1->dq.c, s2->dq.c, s3->dq.c},
-                     {s0->dq.s, s1->dq.s, s2->dq.s, s3->dq.s}};
+                     {s0->dp.y, s1->dp.y, s2->dp.y, s3->dp.y}, {s0->da, s1->da, s2->da, s3->da}};
 }
 
 static inline void scatter(tb_solver_body* states, const int32_t* idx, const wide_body* b) {
@@ -392,8 +394,9 @@ static void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h, 
   tb_f4 total_normal = zero;
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
-    tb_f4 prax = A.qc * cp->rax - A.qs * cp->ray, pray = A.qs * cp->rax + A.qc * cp->ray;
-    tb_f4 prbx = B.qc * cp->rbx - B.qs * cp->rby, prby = B.qs * cp->rbx + B.qc * cp->rby;
+    /* da x r = (-da r.y, da r.x), as tb_cross_sv in the scalar path */
+    tb_f4 prax = -A.da * cp->ray, pray = A.da * cp->rax;
+    tb_f4 prbx = -B.da * cp->rby, prby = B.da * cp->rbx;
     tb_f4 s = (dpx + (prbx - prax)) * c->nx + (dpy + (prby - pray)) * c->ny + cp->base_separation;
     tb_i4 speculative = s > zero;
     tb_f4 bias, mass_scale, impulse_scale;

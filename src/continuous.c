@@ -98,7 +98,12 @@ typedef struct sweep_context {
   float t;                      /* earliest impact so far; 1 = none */
 } sweep_context;
 
-typedef enum toi_kind { TOI_NONE, TOI_IMPACT, TOI_TOUCHING } toi_kind;
+typedef enum toi_kind {
+  TOI_NONE,      /* no impact before t_max */
+  TOI_IMPACT,    /* the gap reaches the target at t > 0 */
+  TOI_AT_START,  /* the gap is at the target already at t = 0 */
+  TOI_OVERLAPPED /* closer than the target at t = 0 */
+} toi_kind;
 
 /* Time of impact of the swept proxy against a fixed one, searched in [0, t_max). */
 static toi_kind impact(const tb_shape_proxy* fixed, const tb_sweep* fixed_sweep, const tb_shape_proxy* moving,
@@ -108,14 +113,14 @@ static toi_kind impact(const tb_shape_proxy* fixed, const tb_sweep* fixed_sweep,
   if (tb_time_of_impact(&in, &out) != TB_OK) return TOI_NONE;
   switch (out.state) {
     case TB_TOI_SEPARATED: return TOI_NONE;
-    case TB_TOI_OVERLAPPED: return TOI_TOUCHING;
+    case TB_TOI_OVERLAPPED: return TOI_OVERLAPPED;
     case TB_TOI_HIT:
     case TB_TOI_FAILED: /* t is still a safe time: the gap stays above target up to it */
       if (out.t > 0.0f) {
         *t = out.t;
         return TOI_IMPACT;
       }
-      return TOI_TOUCHING;
+      return TOI_AT_START;
   }
   return TOI_NONE;
 }
@@ -138,7 +143,8 @@ static bool candidate(int32_t proxy, int32_t other_index, void* context) {
   const tb_shape* o = tb_shape_at(w, other_index);
   if (o->body == sc->body || o->sensor) return true;
   const tb_body* ob = tb_body_at(w, o->body);
-  if (ob->type != TB_STATIC_BODY && (!sc->bullet || ob->is_bullet)) return true;
+  if (ob->type != TB_STATIC_BODY && !sc->bullet) return true;
+  if (ob->type == TB_DYNAMIC_BODY && ob->is_bullet) return true; /* bullet against bullet: the contact's */
   if (!tb_filters_collide(sc->s->filter, o->filter) || !tb_shape_types_collide(sc->s->type, o->type)) return true;
   tb_sweep fixed = {ob->local_center, ob->center, ob->center, ob->angle, ob->angle};
   tb_transform xf = tb_sweep_transform(&fixed, 0.0f);
@@ -156,9 +162,14 @@ static bool candidate(int32_t proxy, int32_t other_index, void* context) {
   tb_shape_proxy other = shape_proxy(o);
   float t = sc->t;
   toi_kind k = impact(&other, &fixed, &sc->proxy, &sc->sweep, sc->t, &t);
-  if (k == TOI_TOUCHING && sc->extent > 0.0f) {
-    /* Already touching: the contact solver owns the pair, but the core must
-     * still not pass through (a bullet grazing a thin wall). */
+  if ((k == TOI_AT_START || k == TOI_OVERLAPPED) && sc->extent > 0.0f) {
+    /* Already touching: the contact owns the pair and the body is not held
+     * back (holding it would stop it sliding along the surface). Only its
+     * core, a disc of a quarter of the shape's thinnest half-width about its
+     * centroid, is still swept: if the contact loses the body, the core stops
+     * at the target gap instead of passing through. A core already at the
+     * target gap at t = 0 is left alone too: holding it there can keep the
+     * body, and the velocity the solver gave it, in place for good. */
     tb_shape_proxy core = tb_make_proxy(&sc->centroid_local, 1, CORE_FRACTION * sc->extent);
     k = impact(&other, &fixed, &core, &sc->sweep, sc->t, &t);
   }

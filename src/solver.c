@@ -48,7 +48,10 @@ static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_moti
   tb_solver_body* states = ctx->states;
   float h = ctx->h;
   float max_speed = ctx->max_linear_speed;
-  float max_angular = 0.25f * 3.14159265f * ctx->inv_h; /* a quarter turn per substep */
+  /* At most half a turn per step (94 rad/s at 60 Hz): beyond it a corner can
+   * swing through a thin wall between two collisions, and the sweep of the
+   * continuous pass no longer describes the motion. */
+  float max_angular = 0.5f * 3.14159265f * ctx->inv_dt;
   for (int i = 0; i < w->awake_count; ++i) {
     tb_body_motion* m = &motions[i];
     if (!(m->flags & MOTION_DYNAMIC) || (m->flags & MOTION_FREE)) continue;
