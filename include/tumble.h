@@ -541,9 +541,10 @@ typedef struct tb_manifold_point {
   tb_vec2 point;    /* world point, midway between the two surfaces */
   float separation; /* signed gap along the normal; negative when overlapping */
   uint32_t id;      /* feature id */
-  /* Impulses the solver applied at this point in the last step (N s; 0 from
-   * the tb_collide_* functions): along the normal and along the tangent
-   * (n.y, -n.x). Divide by the time step for forces. */
+  /* Impulses the solver applied at this point in the last substep of the
+   * last step (N s; 0 from the tb_collide_* functions), along the normal and
+   * along the tangent (n.y, -n.x). Divide by the substep, time_step /
+   * substeps, for the contact force. */
   float normal_impulse;
   float tangent_impulse;
 } tb_manifold_point;
@@ -784,7 +785,8 @@ bool tb_joint_get_collide_connected(tb_joint_id joint);
 tb_result tb_joint_set_collide_connected(tb_joint_id joint, bool collide);
 void* tb_joint_get_user_data(tb_joint_id joint);
 tb_result tb_joint_set_user_data(tb_joint_id joint, void* user_data);
-/* The force (N) and torque (N m) the joint applied to body B during the last step. */
+/* The force (N) and torque (N m) the joint applied to body B in the last
+ * substep of the last step (its impulse over the substep). */
 tb_vec2 tb_joint_get_constraint_force(tb_joint_id joint);
 float tb_joint_get_constraint_torque(tb_joint_id joint);
 

@@ -467,6 +467,24 @@ void tb_contact_solver_warm_start(tb_world* w, tb_step_context* ctx) {
   for (int k = 0; k < w->overflow_count; ++k) warm_start_one(&cs[w->overflow[k]], ctx->states);
 }
 
+/* Without warm starting every substep starts from zero impulses: clamping
+ * against a total that was not applied in this substep could let a contact
+ * pull. */
+void tb_contact_solver_reset(tb_world* w) {
+  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+  const tb_f4 zero = splat(0.0f);
+  for (int b = 0; b < w->wide_count; ++b) {
+    for (int p = 0; p < 2; ++p) wide[b].p[p].normal_impulse = wide[b].p[p].tangent_impulse = zero;
+    wide[b].rolling_impulse = zero;
+  }
+  tb_contact_constraint* cs = constraints(w);
+  for (int k = 0; k < w->overflow_count; ++k) {
+    tb_contact_constraint* cc = &cs[w->overflow[k]];
+    for (int p = 0; p < 2; ++p) cc->points[p].normal_impulse = cc->points[p].tangent_impulse = 0.0f;
+    cc->rolling_impulse = 0.0f;
+  }
+}
+
 void tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   for (int b = 0; b < w->wide_count; ++b)

@@ -567,6 +567,9 @@ void tb_joint_warm_start(tb_world* w, int index, tb_step_context* ctx) {
 void tb_joint_solve(tb_world* w, int index, tb_step_context* ctx, bool use_bias) {
   tb_joint* j = tb_joint_at(w, index);
   if (j->skip) return;
+  /* Without warm starting every substep accumulates from zero (its biased
+   * solve comes first), so that the impulses stay those of one substep. */
+  if (use_bias && !ctx->enable_warm_starting) zero_impulses(j);
   body_pair p = load_pair(j, ctx);
   switch (j->type) {
     case TB_JOINT_DISTANCE: distance_solve(j, ctx, &p.a, &p.b, use_bias); break;

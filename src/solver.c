@@ -211,6 +211,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     if (ctx.enable_warm_starting) {
       for (int k = 0; k < w->step_joint_count; ++k) tb_joint_warm_start(w, w->step_joints[k], &ctx);
       tb_contact_solver_warm_start(w, &ctx);
+    } else {
+      tb_contact_solver_reset(w);
     }
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, true);
     tb_contact_solver_solve(w, &ctx, true);

@@ -532,6 +532,27 @@ uint64_t tb_world_hash(tb_world_id id) {
     hash_int(&s, b->fixed_rotation + 2 * b->enabled + 4 * b->mass_overridden);
     for (int k = b->shape_list; k >= 0; k = tb_shape_at(w, k)->next) hash_shape(&s, tb_shape_at(w, k));
   }
+  hash_int(&s, w->joints.count);
+  for (int i = 0; i < w->joints.high; ++i) {
+    if (!tb_pool_alive(&w->joints, i)) continue;
+    const tb_joint* j = tb_joint_at(w, i);
+    hash_int(&s, i);
+    hash_int(&s, (int)j->type + 8 * j->collide_connected + 16 * j->enable_spring + 32 * j->enable_limit +
+                     64 * j->enable_motor);
+    hash_int(&s, j->edges[0].body);
+    hash_int(&s, j->edges[1].body);
+    hash_vec(&s, j->local_anchor_a);
+    hash_vec(&s, j->local_anchor_b);
+    hash_vec(&s, j->local_axis_a);
+    hash_vec(&s, j->target);
+    const float f[] = {j->reference_angle, j->length,         j->lower,           j->upper,
+                       j->hertz,           j->damping_ratio,  j->angular_hertz,   j->angular_damping_ratio,
+                       j->motor_speed,     j->max_motor,      j->max_force,       j->max_torque,
+                       j->correction_factor, j->linear_impulse.x, j->linear_impulse.y, j->angular_impulse,
+                       j->axial_impulse,   j->spring_impulse, j->motor_impulse,   j->lower_impulse,
+                       j->upper_impulse};
+    for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) hash_float(&s, f[k]);
+  }
   return s.h;
 }
 

@@ -129,6 +129,7 @@ int tb_solve(tb_world* world, float time_step, int substeps);
  * (restitution, impulses kept for the next step). */
 bool tb_contact_solver_prepare(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_warm_start(tb_world* w, struct tb_step_context* ctx);
+void tb_contact_solver_reset(tb_world* w);
 void tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias);
 void tb_contact_solver_finish(tb_world* w, struct tb_step_context* ctx);
 /* Continuous collision (continuous.c): fast bodies and bullets stop at their
