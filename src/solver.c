@@ -265,9 +265,12 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       b->sleep_time = 0.0f;
     }
     /* continuous collision for bodies that moved more than half their
-     * thinnest part this step (slower ones are caught by speculative points) */
+     * thinnest part, or more than the speculative distance, this step: the
+     * speculative points of slower ones stop them at the surface, faster ones
+     * would sink into static geometry before the contact catches them */
     if (w->enable_continuous && b->type == TB_DYNAMIC_BODY)
-      b->is_fast = b->is_bullet || tb_length(moved) + b->max_extent * fabsf(turned) > 0.5f * b->min_extent;
+      b->is_fast = b->is_bullet || tb_length(moved) + b->max_extent * fabsf(turned) >
+                                       fminf(0.5f * b->min_extent, TB_SPECULATIVE_DISTANCE);
   }
   return bad;
 }
