@@ -213,8 +213,8 @@ typedef struct tb_world_def {
   float restitution_threshold;
   /* Speed limit of every body (m/s, > 0, default 1000): a guard against blow-ups. */
   float maximum_linear_speed;
-  bool enable_sleep;        /* default true: resting islands fall asleep */
-  bool enable_continuous;   /* default true: fast bodies are swept (no tunnelling) */
+  bool enable_sleep;         /* default true: resting islands fall asleep */
+  bool enable_continuous;    /* default true: fast bodies are swept (no tunnelling) */
   bool enable_warm_starting; /* default true */
   void* user_data;
 } tb_world_def;
@@ -351,8 +351,10 @@ tb_result tb_body_set_user_data(tb_body_id body, void* user_data);
 /* Sleep. A body sleeps with its whole island (the bodies it touches or is
  * jointed to, through dynamic bodies) once they all stayed below their sleep
  * threshold for TB_TIME_TO_SLEEP. Setting a body awake wakes its island; setting
- * it asleep puts its island to sleep. Forces, impulses, velocities, joints and
- * shape changes wake a body. */
+ * it asleep puts its island to sleep. Forces, impulses, velocities, a new
+ * transform, joints, destroying a shape or changing its density wake a body;
+ * adding a shape wakes it when it touches or is jointed to something (so a
+ * body created asleep can get its shapes and stay asleep). */
 #define TB_TIME_TO_SLEEP 0.5f
 bool tb_body_is_awake(tb_body_id body);
 tb_result tb_body_set_awake(tb_body_id body, bool awake);
@@ -660,8 +662,8 @@ typedef struct tb_distance_joint_def {
   bool enable_limit;
   float min_length, max_length;
   bool enable_motor;
-  float max_motor_force; /* N, >= 0 */
-  float motor_speed;     /* m/s, lengthening */
+  float max_motor_force;  /* N, >= 0 */
+  float motor_speed;      /* m/s, lengthening */
   bool collide_connected; /* default false: the two bodies do not collide */
   void* user_data;
 } tb_distance_joint_def;
@@ -736,7 +738,7 @@ typedef struct tb_mouse_joint_def {
   tb_body_id body_a, body_b;
   tb_vec2 target; /* world point */
   float hertz, damping_ratio;
-  float max_force; /* N, >= 0 */
+  float max_force;        /* N, >= 0 */
   bool collide_connected; /* default true */
   void* user_data;
 } tb_mouse_joint_def;

@@ -119,7 +119,8 @@ bool tb_contact_create(tb_world* w, int ia, int ib) {
   c->edges[1].body = sb->body;
   c->friction = mix_friction(w, sa->friction, sb->friction);
   c->restitution = mix_restitution(w, sa->restitution, sb->restitution);
-  float rra = sa->rolling_resistance * shape_rolling_radius(sa), rrb = sb->rolling_resistance * shape_rolling_radius(sb);
+  float rra = sa->rolling_resistance * shape_rolling_radius(sa),
+        rrb = sb->rolling_resistance * shape_rolling_radius(sb);
   c->rolling_resistance = rra > rrb ? rra : rrb;
   c->tangent_speed = sa->tangent_speed + sb->tangent_speed;
   c->flags = TB_CONTACT_ENABLED;
@@ -243,8 +244,8 @@ static bool update_contact(tb_world* w, int i) {
     return false;
   }
   tb_manifold old = c->manifold;
-  c->manifold = collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb,
-                                                  tb_body_at(w, sb->body)->transform);
+  c->manifold =
+      collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb, tb_body_at(w, sb->body)->transform);
   carry_impulses(&old, &c->manifold);
   bool touching = c->manifold.point_count > 0;
   if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */

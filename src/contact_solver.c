@@ -353,9 +353,12 @@ typedef struct wide_body {
 
 static inline wide_body gather(const tb_solver_body* states, const int32_t* idx) {
   const tb_solver_body *s0 = &states[idx[0]], *s1 = &states[idx[1]], *s2 = &states[idx[2]], *s3 = &states[idx[3]];
-  return (wide_body){{s0->v.x, s1->v.x, s2->v.x, s3->v.x},     {s0->v.y, s1->v.y, s2->v.y, s3->v.y},
-                     {s0->w, s1->w, s2->w, s3->w},             {s0->dp.x, s1->dp.x, s2->dp.x, s3->dp.x},
-                     {s0->dp.y, s1->dp.y, s2->dp.y, s3->dp.y}, {s0->da, s1->da, s2->da, s3->da}};
+  return (wide_body){{s0->v.x, s1->v.x, s2->v.x, s3->v.x},
+                     {s0->v.y, s1->v.y, s2->v.y, s3->v.y},
+                     {s0->w, s1->w, s2->w, s3->w},
+                     {s0->dp.x, s1->dp.x, s2->dp.x, s3->dp.x},
+                     {s0->dp.y, s1->dp.y, s2->dp.y, s3->dp.y},
+                     {s0->da, s1->da, s2->da, s3->da}};
 }
 
 static inline void scatter(tb_solver_body* states, const int32_t* idx, const wide_body* b) {

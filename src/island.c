@@ -132,25 +132,25 @@ static void sleep_island(tb_world* w, const int* members, int count) {
 
 /* Calls visit(other) for each body linked to `body` by a touching, enabled,
  * non-sensor contact or by a joint. */
-#define FOR_EACH_LINK(w, body, other, visit)                                                              \
-  do {                                                                                                    \
-    for (int key_ = tb_body_at(w, body)->contact_list; key_ >= 0;) {                                      \
-      const tb_contact* c_ = (const tb_contact*)tb_pool_at(&(w)->contacts, key_ >> 1);                    \
-      int next_ = c_->edges[key_ & 1].next;                                                               \
-      const uint32_t need_ = TB_CONTACT_TOUCHING | TB_CONTACT_ENABLED;                                    \
-      if ((c_->flags & need_) == need_ && !(c_->flags & TB_CONTACT_SENSOR)) {                             \
-        int other = c_->edges[(key_ & 1) ^ 1].body;                                                       \
-        visit;                                                                                            \
-      }                                                                                                   \
-      key_ = next_;                                                                                       \
-    }                                                                                                     \
-    for (int key_ = tb_body_at(w, body)->joint_list; key_ >= 0;) {                                        \
-      const tb_joint* j_ = tb_joint_at(w, key_ >> 1);                                                     \
-      int next_ = j_->edges[key_ & 1].next;                                                               \
-      int other = j_->edges[(key_ & 1) ^ 1].body;                                                         \
-      visit;                                                                                              \
-      key_ = next_;                                                                                       \
-    }                                                                                                     \
+#define FOR_EACH_LINK(w, body, other, visit)                                           \
+  do {                                                                                 \
+    for (int key_ = tb_body_at(w, body)->contact_list; key_ >= 0;) {                   \
+      const tb_contact* c_ = (const tb_contact*)tb_pool_at(&(w)->contacts, key_ >> 1); \
+      int next_ = c_->edges[key_ & 1].next;                                            \
+      const uint32_t need_ = TB_CONTACT_TOUCHING | TB_CONTACT_ENABLED;                 \
+      if ((c_->flags & need_) == need_ && !(c_->flags & TB_CONTACT_SENSOR)) {          \
+        int other = c_->edges[(key_ & 1) ^ 1].body;                                    \
+        visit;                                                                         \
+      }                                                                                \
+      key_ = next_;                                                                    \
+    }                                                                                  \
+    for (int key_ = tb_body_at(w, body)->joint_list; key_ >= 0;) {                     \
+      const tb_joint* j_ = tb_joint_at(w, key_ >> 1);                                  \
+      int next_ = j_->edges[key_ & 1].next;                                            \
+      int other = j_->edges[(key_ & 1) ^ 1].body;                                      \
+      visit;                                                                           \
+      key_ = next_;                                                                    \
+    }                                                                                  \
   } while (0)
 
 /* The awake island of `seed` (whose mark must be clear): depth-first search

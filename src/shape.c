@@ -99,8 +99,11 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
   }
   int index = tb_shape_attach(w, body_id.index1 - 1, &proto, fn);
   if (index < 0) return null_id;
-  tb_body_update_mass(w, tb_body_at(w, body_id.index1 - 1));
-  tb_wake_body(w, body_id.index1 - 1);
+  tb_body* owner = tb_body_at(w, body_id.index1 - 1);
+  tb_body_update_mass(w, owner);
+  /* a new shape wakes a body that touches or is jointed to something; a body
+   * created asleep and not yet linked keeps sleeping while it gets its shapes */
+  if (owner->contact_count > 0 || owner->joint_count > 0) tb_wake_body(w, body_id.index1 - 1);
   return tb_make_shape_id(w, index);
 }
 
@@ -244,6 +247,15 @@ tb_result tb_shape_set_tangent_speed(tb_shape_id id, float speed) {
   if (!tb_value_ok(speed))
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: speed = %g is not finite", __func__, (double)speed);
   s->tangent_speed = speed;
+  /* contacts hold the sum of their shapes' speeds: refresh this shape's */
+  int index = id.index1 - 1;
+  for (int key = tb_body_at(w, s->body)->contact_list; key >= 0;) {
+    tb_contact* c = (tb_contact*)tb_pool_at(&w->contacts, key >> 1);
+    if (c->shape_a == index || c->shape_b == index)
+      c->tangent_speed = tb_shape_at(w, c->shape_a)->tangent_speed + tb_shape_at(w, c->shape_b)->tangent_speed;
+    key = c->edges[key & 1].next;
+  }
+  tb_wake_body(w, s->body);
   return TB_OK;
 }
 

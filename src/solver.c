@@ -61,8 +61,14 @@ static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_moti
     if (m->flags & MOTION_FIELD) { /* a force field: evaluated at the current state */
       int index = w->awake[i];
       const tb_body* b = tb_body_at(w, index);
-      tb_body_state st = {tb_make_body_id(w, index), tb_add(b->center, s->dp), b->angle + s->da, s->v, s->w,
-                          b->mass, b->inertia, b->user_data};
+      tb_body_state st = {tb_make_body_id(w, index),
+                          tb_add(b->center, s->dp),
+                          b->angle + s->da,
+                          s->v,
+                          s->w,
+                          b->mass,
+                          b->inertia,
+                          b->user_data};
       tb_vec2 f = {0.0f, 0.0f};
       float tq = 0.0f;
       w->force_field(t, &st, w->force_field_context, &f, &tq);
@@ -116,8 +122,7 @@ static bool collect_joints(tb_world* w) {
       int next = j->edges[key & 1].next;
       int other = tb_body_at(w, j->edges[(key & 1) ^ 1].body)->awake_index;
       if (other < 0 || other > i || (other == i && (key & 1) == 0)) {
-        if (!tb_array_reserve((void**)&w->step_joints, &w->step_joint_capacity, w->step_joint_count + 1,
-                              sizeof(int)))
+        if (!tb_array_reserve((void**)&w->step_joints, &w->step_joint_capacity, w->step_joint_count + 1, sizeof(int)))
           return false;
         w->step_joints[w->step_joint_count++] = key >> 1;
       }
@@ -127,9 +132,7 @@ static bool collect_joints(tb_world* w) {
   return true;
 }
 
-static tb_body_motion* motions_of(tb_world* w) {
-  return (tb_body_motion*)(void*)(w->states + w->awake_count + 1);
-}
+static tb_body_motion* motions_of(tb_world* w) { return (tb_body_motion*)(void*)(w->states + w->awake_count + 1); }
 
 /* Room for the solver bodies (+1 static dummy) and, after them, the motions. */
 static bool reserve_scratch(tb_world* w) {
@@ -179,8 +182,9 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   for (int i = 0; i < n; ++i) {
     tb_body* b = tb_body_at(w, w->awake[i]);
     bool dynamic = b->type == TB_DYNAMIC_BODY;
-    w->states[i] = (tb_solver_body){b->linear_velocity, b->angular_velocity, dynamic ? b->inv_mass : 0.0f,
-                                    dynamic ? b->inv_inertia : 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
+    w->states[i] = (tb_solver_body){
+        b->linear_velocity, b->angular_velocity, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f,
+        {0.0f, 0.0f},       {1.0f, 0.0f}};
     tb_body_motion* m = &motions[i];
     m->flags = 0;
     if (dynamic) {

@@ -12,9 +12,9 @@
  * Positions are never summed into world coordinates inside the step, so a
  * scene at 65 km solves with the same precision as one at the origin. */
 typedef struct tb_solver_body {
-  tb_vec2 v;        /* linear velocity of the centre of mass */
-  float w;          /* angular velocity */
-  float inv_mass;   /* 0 for static, kinematic */
+  tb_vec2 v;      /* linear velocity of the centre of mass */
+  float w;        /* angular velocity */
+  float inv_mass; /* 0 for static, kinematic */
   float inv_inertia;
   float da;   /* angle turned since the step began (exact scalar sum of h w) */
   tb_vec2 dp; /* displacement of the centre of mass since the step began */

@@ -30,11 +30,13 @@ tb_world_def tb_default_world_def(void) {
 
 /* Range checks shared by tb_create_world and the setters. */
 static tb_result check_positive(tb_world* w, const char* fn, const char* what, float x) {
-  if (!tb_value_ok(x) || x <= 0.0f) return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and finite", fn, what, (double)x);
+  if (!tb_value_ok(x) || x <= 0.0f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and finite", fn, what, (double)x);
   return TB_OK;
 }
 static tb_result check_non_negative(tb_world* w, const char* fn, const char* what, float x) {
-  if (!tb_value_ok(x) || x < 0.0f) return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, what, (double)x);
+  if (!tb_value_ok(x) || x < 0.0f)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, what, (double)x);
   return TB_OK;
 }
 static tb_result check_contact_tuning(tb_world* w, const char* fn, float hertz, float zeta, float push) {
@@ -545,11 +547,26 @@ uint64_t tb_world_hash(tb_world_id id) {
     hash_vec(&s, j->local_anchor_b);
     hash_vec(&s, j->local_axis_a);
     hash_vec(&s, j->target);
-    const float f[] = {j->reference_angle, j->length,         j->lower,           j->upper,
-                       j->hertz,           j->damping_ratio,  j->angular_hertz,   j->angular_damping_ratio,
-                       j->motor_speed,     j->max_motor,      j->max_force,       j->max_torque,
-                       j->correction_factor, j->linear_impulse.x, j->linear_impulse.y, j->angular_impulse,
-                       j->axial_impulse,   j->spring_impulse, j->motor_impulse,   j->lower_impulse,
+    const float f[] = {j->reference_angle,
+                       j->length,
+                       j->lower,
+                       j->upper,
+                       j->hertz,
+                       j->damping_ratio,
+                       j->angular_hertz,
+                       j->angular_damping_ratio,
+                       j->motor_speed,
+                       j->max_motor,
+                       j->max_force,
+                       j->max_torque,
+                       j->correction_factor,
+                       j->linear_impulse.x,
+                       j->linear_impulse.y,
+                       j->angular_impulse,
+                       j->axial_impulse,
+                       j->spring_impulse,
+                       j->motor_impulse,
+                       j->lower_impulse,
                        j->upper_impulse};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) hash_float(&s, f[k]);
   }
