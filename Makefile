@@ -173,7 +173,7 @@ uninstall:
 	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc
 
 FORMATTED := include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp \
-  tests/reference/*.h demos/*.c tools/*.c tools/*.cpp
+  tests/reference/*.h demos/*.c demos/scenes/*.c demos/scenes/*.h tools/*.c tools/*.cpp
 format:
 	clang-format -i $(FORMATTED)
 
