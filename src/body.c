@@ -125,12 +125,6 @@ static tb_result check_type(tb_world* w, const char* fn, tb_body_type t) {
   return TB_OK;
 }
 
-static tb_result check_damping(tb_world* w, const char* fn, const char* name, float d) {
-  if (!tb_value_ok(d) || d < 0.0f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, name, (double)d);
-  return TB_OK;
-}
-
 static tb_result check_vector(tb_world* w, const char* fn, const char* name, tb_vec2 v) {
   if (!tb_vector_ok(v))
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = (%g, %g) is not finite or beyond TB_MAX_VALUE", fn, name,
@@ -169,10 +163,10 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
   if (check_type(w, fn, def->type) || check_point(w, fn, "def->position", def->position) ||
       check_angle(w, fn, def->angle) || check_vector(w, fn, "def->linear_velocity", def->linear_velocity) ||
       check_value(w, fn, "def->angular_velocity", def->angular_velocity) ||
-      check_damping(w, fn, "def->linear_damping", def->linear_damping) ||
-      check_damping(w, fn, "def->angular_damping", def->angular_damping) ||
+      tb_check_non_negative(w, fn, "def->linear_damping", def->linear_damping) ||
+      tb_check_non_negative(w, fn, "def->angular_damping", def->angular_damping) ||
       check_value(w, fn, "def->gravity_scale", def->gravity_scale) ||
-      check_damping(w, fn, "def->sleep_threshold", def->sleep_threshold))
+      tb_check_non_negative(w, fn, "def->sleep_threshold", def->sleep_threshold))
     return null_id;
   int index = tb_pool_alloc(&w->bodies);
   if (index < 0) {
@@ -386,7 +380,7 @@ float tb_body_get_linear_damping(tb_body_id id) {
 
 tb_result tb_body_set_linear_damping(tb_body_id id, float damping) {
   GET_BODY_FOR_CHANGE(id);
-  if (check_damping(w, __func__, "damping", damping)) return tb_last_result();
+  if (tb_check_non_negative(w, __func__, "damping", damping)) return tb_last_result();
   b->linear_damping = damping;
   return TB_OK;
 }
@@ -398,7 +392,7 @@ float tb_body_get_angular_damping(tb_body_id id) {
 
 tb_result tb_body_set_angular_damping(tb_body_id id, float damping) {
   GET_BODY_FOR_CHANGE(id);
-  if (check_damping(w, __func__, "damping", damping)) return tb_last_result();
+  if (tb_check_non_negative(w, __func__, "damping", damping)) return tb_last_result();
   b->angular_damping = damping;
   return TB_OK;
 }
@@ -709,7 +703,7 @@ float tb_body_get_sleep_threshold(tb_body_id id) {
 
 tb_result tb_body_set_sleep_threshold(tb_body_id id, float speed) {
   GET_BODY_FOR_CHANGE(id);
-  if (check_damping(w, __func__, "speed", speed)) return tb_last_result();
+  if (tb_check_non_negative(w, __func__, "speed", speed)) return tb_last_result();
   b->sleep_threshold = speed;
   return TB_OK;
 }

@@ -1,5 +1,6 @@
 #include "error.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -47,4 +48,14 @@ const char* tb_result_name(tb_result r) {
     case TB_ERR_NUMERIC: return "TB_ERR_NUMERIC";
   }
   return "TB_ERR_UNKNOWN";
+}
+
+tb_result tb_check_non_negative(struct tb_world* w, const char* fn, const char* name, float x) {
+  if (isfinite(x) && fabsf(x) <= TB_MAX_VALUE && x >= 0.0f) return TB_OK;
+  return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, name, (double)x);
+}
+
+tb_result tb_check_positive(struct tb_world* w, const char* fn, const char* name, float x) {
+  if (isfinite(x) && fabsf(x) <= TB_MAX_VALUE && x > 0.0f) return TB_OK;
+  return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and finite", fn, name, (double)x);
 }

@@ -16,6 +16,11 @@ struct tb_world;
 /* Records the error and returns r, so callers can write `return tb_fail(...)`. */
 tb_result tb_fail(struct tb_world* world, tb_result r, const char* fmt, ...) TB_PRINTF(3, 4);
 
+/* The shared range checks: record "fn: name = x must be >= 0 (> 0) and
+ * finite" and return its code, or TB_OK. */
+tb_result tb_check_non_negative(struct tb_world* world, const char* fn, const char* name, float x);
+tb_result tb_check_positive(struct tb_world* world, const char* fn, const char* name, float x);
+
 #define TB_ERROR_MESSAGE_CAPACITY 256
 
 #endif

@@ -739,11 +739,6 @@ static tb_result check_real(tb_world* w, const char* fn, const char* name, float
   return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be finite (at most TB_MAX_VALUE)", fn, name, (double)x);
 }
 
-static tb_result check_non_negative(tb_world* w, const char* fn, const char* name, float x) {
-  if (tb_value_ok(x) && x >= 0.0f) return TB_OK;
-  return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, name, (double)x);
-}
-
 /* A signed distance (translation limits). */
 static tb_result check_translation(tb_world* w, const char* fn, const char* name, float x) {
   if (tb_length_ok(x)) return TB_OK;
@@ -772,8 +767,8 @@ static tb_result check_axis(tb_world* w, const char* fn, const char* name, tb_ve
 
 static tb_result check_spring(tb_world* w, const char* fn, const char* hertz_name, float hertz, const char* zeta_name,
                               float zeta) {
-  TRY(check_non_negative(w, fn, hertz_name, hertz));
-  return check_non_negative(w, fn, zeta_name, zeta);
+  TRY(tb_check_non_negative(w, fn, hertz_name, hertz));
+  return tb_check_non_negative(w, fn, zeta_name, zeta);
 }
 
 /* A body of the joint's definition: alive, unlocked, of world w. */
@@ -869,7 +864,7 @@ static tb_result check_distance_def(tb_world* w, const char* fn, const tb_distan
   TRY(check_length(w, fn, "def->min_length", d->min_length, 0.0f));
   TRY(check_length(w, fn, "def->max_length", d->max_length, 0.0f));
   TRY(check_order(w, fn, "def->min_length", d->min_length, "def->max_length", d->max_length));
-  TRY(check_non_negative(w, fn, "def->max_motor_force", d->max_motor_force));
+  TRY(tb_check_non_negative(w, fn, "def->max_motor_force", d->max_motor_force));
   return check_real(w, fn, "def->motor_speed", d->motor_speed);
 }
 
@@ -903,7 +898,7 @@ static tb_result check_revolute_def(tb_world* w, const char* fn, const tb_revolu
   TRY(check_real(w, fn, "def->lower_angle", d->lower_angle));
   TRY(check_real(w, fn, "def->upper_angle", d->upper_angle));
   TRY(check_order(w, fn, "def->lower_angle", d->lower_angle, "def->upper_angle", d->upper_angle));
-  TRY(check_non_negative(w, fn, "def->max_motor_torque", d->max_motor_torque));
+  TRY(tb_check_non_negative(w, fn, "def->max_motor_torque", d->max_motor_torque));
   TRY(check_real(w, fn, "def->motor_speed", d->motor_speed));
   return check_spring(w, fn, "def->hertz", d->hertz, "def->damping_ratio", d->damping_ratio);
 }
@@ -940,7 +935,7 @@ static tb_result check_prismatic_def(tb_world* w, const char* fn, const tb_prism
   TRY(check_translation(w, fn, "def->upper_translation", d->upper_translation));
   TRY(check_order(w, fn, "def->lower_translation", d->lower_translation, "def->upper_translation",
                   d->upper_translation));
-  TRY(check_non_negative(w, fn, "def->max_motor_force", d->max_motor_force));
+  TRY(tb_check_non_negative(w, fn, "def->max_motor_force", d->max_motor_force));
   TRY(check_real(w, fn, "def->motor_speed", d->motor_speed));
   return check_spring(w, fn, "def->hertz", d->hertz, "def->damping_ratio", d->damping_ratio);
 }
@@ -1005,7 +1000,7 @@ static tb_result check_wheel_def(tb_world* w, const char* fn, const tb_wheel_joi
   TRY(check_translation(w, fn, "def->upper_translation", d->upper_translation));
   TRY(check_order(w, fn, "def->lower_translation", d->lower_translation, "def->upper_translation",
                   d->upper_translation));
-  TRY(check_non_negative(w, fn, "def->max_motor_torque", d->max_motor_torque));
+  TRY(tb_check_non_negative(w, fn, "def->max_motor_torque", d->max_motor_torque));
   return check_real(w, fn, "def->motor_speed", d->motor_speed);
 }
 
@@ -1036,7 +1031,7 @@ tb_joint_id tb_create_wheel_joint(tb_world_id world, const tb_wheel_joint_def* d
 static tb_result check_mouse_def(tb_world* w, const char* fn, const tb_mouse_joint_def* d) {
   TRY(check_point(w, fn, "def->target", d->target));
   TRY(check_spring(w, fn, "def->hertz", d->hertz, "def->damping_ratio", d->damping_ratio));
-  return check_non_negative(w, fn, "def->max_force", d->max_force);
+  return tb_check_non_negative(w, fn, "def->max_force", d->max_force);
 }
 
 tb_joint_id tb_create_mouse_joint(tb_world_id world, const tb_mouse_joint_def* def) {
@@ -1061,8 +1056,8 @@ tb_joint_id tb_create_mouse_joint(tb_world_id world, const tb_mouse_joint_def* d
 static tb_result check_motor_def(tb_world* w, const char* fn, const tb_motor_joint_def* d) {
   TRY(check_point(w, fn, "def->linear_offset", d->linear_offset));
   TRY(check_real(w, fn, "def->angular_offset", d->angular_offset));
-  TRY(check_non_negative(w, fn, "def->max_force", d->max_force));
-  TRY(check_non_negative(w, fn, "def->max_torque", d->max_torque));
+  TRY(tb_check_non_negative(w, fn, "def->max_force", d->max_force));
+  TRY(tb_check_non_negative(w, fn, "def->max_torque", d->max_torque));
   if (isfinite(d->correction_factor) && d->correction_factor >= 0.0f && d->correction_factor <= 1.0f) return TB_OK;
   return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->correction_factor = %g must be in [0, 1]", fn,
                  (double)d->correction_factor);
@@ -1273,7 +1268,7 @@ static tb_result set_limits(tb_world* w, tb_joint* j, const char* fn, bool enabl
 static tb_result set_motor(tb_world* w, tb_joint* j, const char* fn, bool enable, float speed, float max,
                            const char* max_name) {
   TRY(check_real(w, fn, "speed", speed));
-  TRY(check_non_negative(w, fn, max_name, max));
+  TRY(tb_check_non_negative(w, fn, max_name, max));
   if (!enable) j->motor_impulse = 0.0f;
   j->enable_motor = enable;
   j->motor_speed = speed;

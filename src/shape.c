@@ -28,12 +28,6 @@ tb_shape_def tb_default_shape_def(void) {
                         .enable_contact_events = true};
 }
 
-static tb_result check_material(tb_world* w, const char* fn, const char* name, float x) {
-  if (!tb_value_ok(x) || x < 0.0f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, name, (double)x);
-  return TB_OK;
-}
-
 static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_shape_type type, const void* geom,
                                 const char* fn) {
   const tb_shape_id null_id = {0, 0, 0};
@@ -44,9 +38,10 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
     tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: %s is NULL", fn, def == NULL ? "def" : "the geometry");
     return null_id;
   }
-  if (check_material(w, fn, "def->density", def->density) || check_material(w, fn, "def->friction", def->friction) ||
-      check_material(w, fn, "def->restitution", def->restitution) ||
-      check_material(w, fn, "def->rolling_resistance", def->rolling_resistance))
+  if (tb_check_non_negative(w, fn, "def->density", def->density) ||
+      tb_check_non_negative(w, fn, "def->friction", def->friction) ||
+      tb_check_non_negative(w, fn, "def->restitution", def->restitution) ||
+      tb_check_non_negative(w, fn, "def->rolling_resistance", def->rolling_resistance))
     return null_id;
   if (!tb_value_ok(def->tangent_speed)) {
     tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->tangent_speed = %g is not finite", fn, (double)def->tangent_speed);
@@ -188,7 +183,7 @@ float tb_shape_get_density(tb_shape_id id) {
 
 tb_result tb_shape_set_density(tb_shape_id id, float density) {
   GET_SHAPE_FOR_CHANGE(id);
-  if (check_material(w, __func__, "density", density)) return tb_last_result();
+  if (tb_check_non_negative(w, __func__, "density", density)) return tb_last_result();
   float old = s->density;
   s->density = density;
   tb_mass_data md = tb_shape_geom_mass(s);
@@ -208,7 +203,7 @@ float tb_shape_get_friction(tb_shape_id id) {
 
 tb_result tb_shape_set_friction(tb_shape_id id, float friction) {
   GET_SHAPE_FOR_CHANGE(id);
-  if (check_material(w, __func__, "friction", friction)) return tb_last_result();
+  if (tb_check_non_negative(w, __func__, "friction", friction)) return tb_last_result();
   s->friction = friction;
   return TB_OK;
 }
@@ -220,7 +215,7 @@ float tb_shape_get_restitution(tb_shape_id id) {
 
 tb_result tb_shape_set_restitution(tb_shape_id id, float restitution) {
   GET_SHAPE_FOR_CHANGE(id);
-  if (check_material(w, __func__, "restitution", restitution)) return tb_last_result();
+  if (tb_check_non_negative(w, __func__, "restitution", restitution)) return tb_last_result();
   s->restitution = restitution;
   return TB_OK;
 }
@@ -232,7 +227,7 @@ float tb_shape_get_rolling_resistance(tb_shape_id id) {
 
 tb_result tb_shape_set_rolling_resistance(tb_shape_id id, float rolling_resistance) {
   GET_SHAPE_FOR_CHANGE(id);
-  if (check_material(w, __func__, "rolling_resistance", rolling_resistance)) return tb_last_result();
+  if (tb_check_non_negative(w, __func__, "rolling_resistance", rolling_resistance)) return tb_last_result();
   s->rolling_resistance = rolling_resistance;
   return TB_OK;
 }

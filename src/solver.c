@@ -132,14 +132,11 @@ static bool collect_joints(tb_world* w) {
   return true;
 }
 
-static tb_body_motion* motions_of(tb_world* w) { return (tb_body_motion*)(void*)(w->states + w->awake_count + 1); }
-
-/* Room for the solver bodies (+1 static dummy) and, after them, the motions. */
+/* Room for the solver bodies (+1 static dummy) and their motion terms. */
 static bool reserve_scratch(tb_world* w) {
   int n = w->awake_count + 1;
-  size_t per = sizeof(tb_solver_body) + sizeof(tb_body_motion);
-  int need = (int)(((size_t)n * per + sizeof(tb_solver_body) - 1) / sizeof(tb_solver_body));
-  return tb_array_reserve((void**)&w->states, &w->state_capacity, need, sizeof(tb_solver_body));
+  return tb_array_reserve((void**)&w->states, &w->state_capacity, n, sizeof(tb_solver_body)) &&
+         tb_array_reserve(&w->motions, &w->motion_capacity, n, sizeof(tb_body_motion));
 }
 
 /* Whether a body has a joint or a touching contact the solver handles. */
@@ -177,7 +174,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.static_index = n;
 
   /* solver bodies and per-step motion terms */
-  tb_body_motion* motions = motions_of(w);
+  tb_body_motion* motions = (tb_body_motion*)w->motions;
   bool field = w->force_field != NULL;
   for (int i = 0; i < n; ++i) {
     tb_body* b = tb_body_at(w, w->awake[i]);

@@ -28,26 +28,15 @@ tb_world_def tb_default_world_def(void) {
                         .enable_warm_starting = true};
 }
 
-/* Range checks shared by tb_create_world and the setters. */
-static tb_result check_positive(tb_world* w, const char* fn, const char* what, float x) {
-  if (!tb_value_ok(x) || x <= 0.0f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and finite", fn, what, (double)x);
-  return TB_OK;
-}
-static tb_result check_non_negative(tb_world* w, const char* fn, const char* what, float x) {
-  if (!tb_value_ok(x) || x < 0.0f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be >= 0 and finite", fn, what, (double)x);
-  return TB_OK;
-}
 static tb_result check_contact_tuning(tb_world* w, const char* fn, float hertz, float zeta, float push) {
-  tb_result r = check_positive(w, fn, "contact hertz", hertz);
-  if (r == TB_OK) r = check_non_negative(w, fn, "contact damping ratio", zeta);
-  if (r == TB_OK) r = check_non_negative(w, fn, "contact push max velocity", push);
+  tb_result r = tb_check_positive(w, fn, "contact hertz", hertz);
+  if (r == TB_OK) r = tb_check_non_negative(w, fn, "contact damping ratio", zeta);
+  if (r == TB_OK) r = tb_check_non_negative(w, fn, "contact push max velocity", push);
   return r;
 }
 static tb_result check_joint_tuning(tb_world* w, const char* fn, float hertz, float zeta) {
-  tb_result r = check_positive(w, fn, "joint hertz", hertz);
-  if (r == TB_OK) r = check_non_negative(w, fn, "joint damping ratio", zeta);
+  tb_result r = tb_check_positive(w, fn, "joint hertz", hertz);
+  if (r == TB_OK) r = tb_check_non_negative(w, fn, "joint damping ratio", zeta);
   return r;
 }
 
@@ -72,8 +61,9 @@ tb_world_id tb_create_world(const tb_world_def* def) {
   if (check_contact_tuning(NULL, "tb_create_world", def->contact_hertz, def->contact_damping_ratio,
                            def->contact_push_max_velocity) != TB_OK ||
       check_joint_tuning(NULL, "tb_create_world", def->joint_hertz, def->joint_damping_ratio) != TB_OK ||
-      check_non_negative(NULL, "tb_create_world", "def->restitution_threshold", def->restitution_threshold) != TB_OK ||
-      check_positive(NULL, "tb_create_world", "def->maximum_linear_speed", def->maximum_linear_speed) != TB_OK)
+      tb_check_non_negative(NULL, "tb_create_world", "def->restitution_threshold", def->restitution_threshold) !=
+          TB_OK ||
+      tb_check_positive(NULL, "tb_create_world", "def->maximum_linear_speed", def->maximum_linear_speed) != TB_OK)
     return null_id;
   if (!tb_value_ok(def->hit_event_threshold) || def->hit_event_threshold < 0.0f) {
     tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_create_world: def->hit_event_threshold = %g must be >= 0 and finite",
@@ -227,6 +217,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   tb_chains_free(w);
   free(w->awake);
   free(w->states);
+  free(w->motions);
   free(w->step_contacts);
   free(w->constraints);
   free(w->wide);
@@ -373,7 +364,7 @@ tb_result tb_world_set_restitution_threshold(tb_world_id id, float speed) {
   const char* fn = "tb_world_set_restitution_threshold";
   tb_world* w = tb_world_get_unlocked(id, fn);
   if (w == NULL) return tb_last_result();
-  tb_result r = check_non_negative(w, fn, "speed", speed);
+  tb_result r = tb_check_non_negative(w, fn, "speed", speed);
   if (r == TB_OK) w->restitution_threshold = speed;
   return r;
 }
@@ -382,7 +373,7 @@ tb_result tb_world_set_maximum_linear_speed(tb_world_id id, float speed) {
   const char* fn = "tb_world_set_maximum_linear_speed";
   tb_world* w = tb_world_get_unlocked(id, fn);
   if (w == NULL) return tb_last_result();
-  tb_result r = check_positive(w, fn, "speed", speed);
+  tb_result r = tb_check_positive(w, fn, "speed", speed);
   if (r == TB_OK) w->maximum_linear_speed = speed;
   return r;
 }

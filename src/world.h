@@ -51,6 +51,8 @@ typedef struct tb_world {
   /* per-step scratch, grown as needed and kept (no allocation in a steady step) */
   struct tb_solver_body* states;
   int state_capacity;
+  void* motions; /* per awake body: gravity, force and damping terms of the step (solver.c) */
+  int motion_capacity;
   int* step_contacts; /* touching contacts the solver handles this step */
   int step_contact_count, step_contact_capacity;
   void* constraints; /* tb_contact_constraint (contact_solver.c) */
