@@ -36,12 +36,23 @@ TEST_UTIL_OBJ := $(BUILD)/obj/tests/test_util.o
 CHECK_CFLAGS = $(shell pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 
-DEMO_BIN := $(BUILD)/tumble-trajectory
-
 # keep test and shim objects between builds (they are intermediate files otherwise)
 .SECONDARY:
 
-.PHONY: all lib test test-pending tests sanitize demo install uninstall clean format format-check deps-test bench
+.PHONY: all lib test test-pending tests sanitize install uninstall clean format format-check deps-test
+
+# Each area has its own fragment in mk/ (demo, bench, stress, fuzz, ...). A
+# fragment may add to these hooks:
+#   EXTRA_TEST_BIN   suites that `make test` builds and runs after the unit and
+#                    reference suites (e.g. the renderer tests, the stress subset)
+#   EXTRA_TEST_DEPS  tools/deps.sh groups `make test` needs besides `test`
+#   EXTRA_SAN_BIN    suites that `make sanitize` builds (under build/sanitize) and runs
+#   FORMATTED        sources that `make format` and `make format-check` cover
+.DEFAULT_GOAL := all
+EXTRA_TEST_BIN :=
+EXTRA_TEST_DEPS :=
+EXTRA_SAN_BIN :=
+include $(sort $(wildcard mk/*.mk))
 
 all: lib
 
@@ -77,15 +88,15 @@ $(BUILD)/tests/reference/%: $(BUILD)/obj/tests/reference/%.o $(SHIM_OBJ) $(TEST_
 	$(CXX) $(EXTRA_CFLAGS) -o $@ $< $(SHIM_OBJ) $(TEST_UTIL_OBJ) $(LIB_A) -lbox2d $(CHECK_LIBS) $(LDLIBS_ALL)
 
 deps-test:
-	@tools/deps.sh test
+	@tools/deps.sh test $(EXTRA_TEST_DEPS)
 
 tests: $(UNIT_BIN) $(REF_BIN)
 
 # The deps check runs first, alone; then the suites build and run.
 test: deps-test
-	@$(MAKE) --no-print-directory tests $(BUILD)/tools/determinism
+	@$(MAKE) --no-print-directory tests $(BUILD)/tools/determinism $(EXTRA_TEST_BIN)
 	@$(MAKE) --no-print-directory DEBUG=1 build/debug/tools/determinism
-	@tools/run_tests.sh $(UNIT_BIN) $(REF_BIN)
+	@tools/run_tests.sh $(UNIT_BIN) $(REF_BIN) $(EXTRA_TEST_BIN)
 	@tools/check_readme_example.sh $(BUILD)
 	@tools/check_determinism.sh $(BUILD)/tools/determinism build/debug/tools/determinism
 
@@ -102,56 +113,11 @@ $(BUILD)/tools/determinism: $(BUILD)/obj/tools/determinism.o $(LIB_A)
 # (CK_FORK=no) so that LeakSanitizer sees every test's allocations.
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 sanitize: deps-test
-	@$(MAKE) --no-print-directory BUILD=build/sanitize EXTRA_CFLAGS="$(SAN)" tests
+	@$(MAKE) --no-print-directory BUILD=build/sanitize EXTRA_CFLAGS="$(SAN)" tests \
+	  $(EXTRA_SAN_BIN:$(BUILD)/%=build/sanitize/%)
 	@CK_FORK=no ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  tools/run_tests.sh $(UNIT_SRC:tests/%.c=build/sanitize/tests/%) $(REF_SRC:tests/reference/%.c=build/sanitize/tests/reference/%)
-
-# ---- demo ----------------------------------------------------------------------
-$(DEMO_BIN): $(BUILD)/obj/demos/trajectory.o $(LIB_A)
-	$(CC) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
-
-demo: $(DEMO_BIN)
-	$(DEMO_BIN)
-
-# ---- bench ---------------------------------------------------------------------
-# Micro benchmarks of the collision issue, tumble and Box2D 2.4.1 side by side:
-# broad-phase tree (10,000 moving proxies) and manifold throughput per pair type.
-BENCH := $(BUILD)/bench
-$(BENCH)/bench_tree: tools/bench_tree.c $(LIB_A)
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
-$(BENCH)/bench_tree_b2: tools/bench_tree_b2.cpp
-	@mkdir -p $(dir $@)
-	$(CXX) $(CXXFLAGS_ALL) -o $@ $< -lbox2d
-$(BENCH)/bench_manifold: $(BUILD)/obj/tools/bench_manifold.o $(BUILD)/obj/tools/bench_manifold_b2.o $(LIB_A)
-	@mkdir -p $(dir $@)
-	$(CXX) -o $@ $^ -lbox2d $(LDLIBS_ALL)
-# Dynamics bench: the six performance scenes of demos/scenes (large_pyramid,
-# many_pyramids, joint_grid, rain, smash, tumbler), tumble at 60 Hz / 4 substeps
-# and Box2D 2.4.1 at 8/3 and 4/2 iterations (see tools/bench_dynamics.c).
-# `make bench-quick` runs them at scale 0.5, one run each (about a minute).
-# Extra options go through BENCH_ARGS, e.g. BENCH_ARGS="--csv build/bench/dynamics.csv".
-$(BENCH)/bench_dynamics: $(BUILD)/obj/tools/bench_dynamics.o $(BUILD)/obj/demos/scenes/scenes.o $(LIB_A)
-	@mkdir -p $(dir $@)
-	$(CC) -o $@ $^ $(LDLIBS_ALL)
-$(BENCH)/bench_dynamics_b2: tools/bench_dynamics_b2.cpp
-	@mkdir -p $(dir $@)
-	$(CXX) $(CXXFLAGS_ALL) -o $@ $< -lbox2d
-
-.PHONY: bench-quick
-bench: deps-test
-	@$(MAKE) --no-print-directory $(BENCH)/bench_tree $(BENCH)/bench_tree_b2 $(BENCH)/bench_manifold \
-	  $(BENCH)/bench_dynamics $(BENCH)/bench_dynamics_b2
-	$(BENCH)/bench_tree
-	$(BENCH)/bench_tree_b2
-	$(BENCH)/bench_manifold
-	$(BENCH)/bench_dynamics $(BENCH_ARGS)
-	$(BENCH)/bench_dynamics_b2 $(BENCH_ARGS)
-
-bench-quick: deps-test
-	@$(MAKE) --no-print-directory $(BENCH)/bench_dynamics $(BENCH)/bench_dynamics_b2
-	$(BENCH)/bench_dynamics --quick $(BENCH_ARGS)
-	$(BENCH)/bench_dynamics_b2 --quick $(BENCH_ARGS)
+	  tools/run_tests.sh $(UNIT_SRC:tests/%.c=build/sanitize/tests/%) $(REF_SRC:tests/reference/%.c=build/sanitize/tests/reference/%) \
+	  $(EXTRA_SAN_BIN:$(BUILD)/%=build/sanitize/%)
 
 # ---- install -------------------------------------------------------------------
 $(BUILD)/tumble.pc: tools/tumble.pc.in Makefile
@@ -172,7 +138,7 @@ uninstall:
 	  $(DESTDIR)$(PREFIX)/lib/libtumble.so $(DESTDIR)$(PREFIX)/lib/libtumble.so.0 \
 	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc
 
-FORMATTED := include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp \
+FORMATTED += include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp \
   tests/reference/*.h demos/*.c demos/scenes/*.c demos/scenes/*.h tools/*.c tools/*.cpp
 format:
 	clang-format -i $(FORMATTED)

@@ -266,6 +266,26 @@ typedef struct tb_counts {
 
 tb_counts tb_world_get_counts(tb_world_id world);
 
+/* Where the last tb_world_step spent its time, in milliseconds of a monotonic
+ * wall clock, and what it worked on. All zero before the first step. The
+ * stages add up to about the whole step; the rest is bookkeeping. */
+typedef struct tb_profile {
+  float step;         /* the whole tb_world_step */
+  float broad_phase;  /* moving proxies in the trees and finding new pairs */
+  float narrow_phase; /* manifolds of the awake bodies' contacts */
+  float solver;       /* integration, constraints (contacts and joints), substeps */
+  float continuous;   /* time-of-impact sweeps of fast bodies and bullets */
+  float islands;      /* sleep bookkeeping: island search, islands falling asleep */
+  int awake_body_count;
+  int awake_contact_count; /* touching contacts the solver handled */
+  int awake_joint_count;   /* joints the solver handled */
+  int pair_count;          /* contacts (pairs with overlapping fat boxes) */
+  int new_pair_count;      /* pairs the broad phase found this step */
+  int continuous_count;    /* bodies swept by continuous collision */
+} tb_profile;
+
+tb_profile tb_world_get_profile(tb_world_id world);
+
 /* A 64-bit hash of the simulated state and settings: every body's placement,
  * velocities, forces, mass and flags, every shape's geometry and material, and
  * the world's gravity, integrator and time. Equal states give equal hashes;
@@ -943,6 +963,8 @@ int tb_body_get_contact_data(tb_body_id body, tb_contact_data* out, int capacity
 /* Number of shapes on a body, and up to capacity of their handles. */
 int tb_body_get_shape_count(tb_body_id body);
 int tb_body_get_shapes(tb_body_id body, tb_shape_id* out, int capacity);
+
+/* ------------------------------------------------------------ debug draw -- */
 
 #ifdef __cplusplus
 }

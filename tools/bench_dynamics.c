@@ -106,6 +106,7 @@ static run_result run_once(const tb_scene* s, const options* o, int steps, scene
   tb_vec2 top0 = tb_body_id_is_null(top) ? (tb_vec2){0.0f, 0.0f} : tb_body_get_position(top);
   double total = 0.0, worst = 0.0;
   for (int k = 0; k < steps; ++k) {
+    if (s->update != NULL) s->update(world, k);
     double t0 = now_ms();
     tb_result r = tb_world_step(world, 1.0f / 60.0f, SUBSTEPS);
     double t1 = now_ms();

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages a make target needs, only when they are missing.
-# Usage: tools/deps.sh GROUP...   (groups: test, sanitize, demo, viewer, bench, fuzz)
+# Usage: tools/deps.sh GROUP...   (groups: test, sanitize, demo, viewer, video, bench, fuzz, valgrind)
 # Idempotent: a package that dpkg reports as installed is never touched again.
 # The library itself needs nothing from here: only a C compiler and libm.
 set -euo pipefail
@@ -28,8 +28,10 @@ for group in "$@"; do
       add g++ "compiles the small C++ shim around Box2D"
       add gnuplot-nox "draws the run-time-against-error plots"
       ;;
+    video) add ffmpeg "turns rendered frame sequences into MP4 and GIF (optional)" ;;
     fuzz) add clang "libFuzzer harnesses" ;;
-    *) echo "deps.sh: unknown group '$group' (known: test sanitize demo viewer bench fuzz)" >&2; exit 2 ;;
+    valgrind) add valgrind "memcheck over the test suite" ;;
+    *) echo "deps.sh: unknown group '$group' (known: test sanitize demo viewer video bench fuzz valgrind)" >&2; exit 2 ;;
   esac
 done
 

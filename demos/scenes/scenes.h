@@ -4,7 +4,8 @@
  * Use: create a world from tb_default_world_def(), then call scene->build(world,
  * scale). Each build sets the world's gravity itself ((0, -10) everywhere but
  * smash, which has none) and creates every body; nothing else about the world is
- * changed. Step at 60 Hz with 4 substeps for scene->default_steps steps.
+ * changed. Step at 60 Hz with 4 substeps for scene->default_steps steps,
+ * calling scene->update (when not NULL) before each step.
  *
  * scale in (0, 1] shrinks the six performance scenes for quick runs: every count
  * along a side (pyramid base, pyramids per row and column, grid sides, tumbler
@@ -36,6 +37,11 @@ typedef struct tb_scene {
   void (*build)(tb_world_id world, float scale);
   int default_steps; /* at 60 Hz */
   tb_aabb bounds;    /* where every body's origin should stay (full scale) */
+  /* NULL, or called before each step with the index of the step about to be
+   * taken (0, 1, ...): scenes that spawn bodies over time or drive motors. */
+  void (*update)(tb_world_id world, int step);
+  /* NULL (the camera fits bounds), or the tag of a body the camera follows. */
+  const char* follow_tag;
 } tb_scene;
 
 /* All scenes: the six performance scenes first (large_pyramid, many_pyramids,
