@@ -220,15 +220,16 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
   }
 }
 
-void tb_solve_continuous(tb_world* w) {
-  if (!w->enable_continuous) return;
+int tb_solve_continuous(tb_world* w) {
+  if (!w->enable_continuous) return 0;
   /* Fast bodies against the static world first, then bullets, which also see
    * where the other moving bodies ended. */
-  int bullets = 0;
+  int bullets = 0, swept = 0;
   for (int i = 0; i < w->awake_count; ++i) {
     int index = w->awake[i];
     const tb_body* b = tb_body_at(w, index);
     if (b->type != TB_DYNAMIC_BODY || !(b->is_fast || b->is_bullet)) continue;
+    swept += 1;
     if (b->is_bullet) {
       bullets += 1;
       continue;
@@ -242,4 +243,5 @@ void tb_solve_continuous(tb_world* w) {
     bullets -= 1;
     sweep_body(w, index, true);
   }
+  return swept;
 }

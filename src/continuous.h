@@ -36,6 +36,5 @@ struct tb_world;
  * (so bullets see where fast bodies ended); candidates come in tree order and
  * ties keep the first: same inputs, same result. Bodies neither fast nor
  * bullets cost one flag test each. */
-void tb_solve_continuous(struct tb_world* w);
 
 #endif

@@ -6,6 +6,7 @@
 
 #include "chain.h"
 #include "math_internal.h"
+#include "timer.h"
 
 /* Worlds live in a fixed table so that a world handle can be checked without
  * touching freed memory. */
@@ -249,15 +250,35 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   w->locked = true;
   w->begin_count = w->end_count = w->hit_count = 0;
   w->sensor_begin_count = w->sensor_end_count = 0;
+  tb_profile* p = &w->profile;
+  double t0 = tb_clock_ms();
+  int pairs_before = w->contacts.count;
   tb_broad_phase_update_pairs(w); /* pairs of the proxies that moved last step */
-  tb_contacts_update(w);          /* manifolds at the start of the step; events; wake-ups */
+  p->new_pair_count = w->contacts.count - pairs_before;
+  double t1 = tb_clock_ms();
+  tb_contacts_update(w); /* manifolds at the start of the step; events; wake-ups */
+  double t2 = tb_clock_ms();
   int bad = tb_solve(w, time_step, substeps);
-  if (w->enable_continuous) tb_solve_continuous(w);
+  p->awake_body_count = w->awake_count; /* before sleep removes any */
+  p->awake_contact_count = w->step_contact_count;
+  p->awake_joint_count = w->step_joint_count;
+  double t3 = tb_clock_ms();
+  p->continuous_count = w->enable_continuous ? tb_solve_continuous(w) : 0;
+  double t4 = tb_clock_ms();
   for (int i = 0; i < w->awake_count; ++i) { /* shapes follow the bodies that moved */
     int index = w->awake[i];
     tb_body_update_proxies(w, index, tb_scale(time_step, tb_body_at(w, index)->linear_velocity));
   }
+  double t5 = tb_clock_ms();
   tb_update_sleep(w);
+  double t6 = tb_clock_ms();
+  p->broad_phase = (float)((t1 - t0) + (t5 - t4));
+  p->narrow_phase = (float)(t2 - t1);
+  p->solver = (float)(t3 - t2);
+  p->continuous = (float)(t4 - t3);
+  p->islands = (float)(t6 - t5);
+  p->step = (float)(t6 - t0);
+  p->pair_count = w->contacts.count;
   w->locked = false;
   w->time += time_step;
   w->step_count += 1;
@@ -415,6 +436,11 @@ tb_counts tb_world_get_counts(tb_world_id id) {
     if (h > c.tree_height) c.tree_height = h;
   }
   return c;
+}
+
+tb_profile tb_world_get_profile(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_get_profile");
+  return w != NULL ? w->profile : (tb_profile){0};
 }
 
 tb_contact_events tb_world_get_contact_events(tb_world_id id) {

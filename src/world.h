@@ -25,12 +25,13 @@ typedef struct tb_world {
   void* user_data;
   double time;
   int step_count;
-  tb_pool bodies;   /* of tb_body */
-  tb_pool shapes;   /* of tb_shape */
-  tb_pool contacts; /* of tb_contact */
-  tb_pool chains;   /* of tb_chain */
-  tb_pool joints;   /* of tb_joint */
-  tb_pool islands;  /* of tb_island: sleeping islands */
+  tb_profile profile; /* of the last step */
+  tb_pool bodies;     /* of tb_body */
+  tb_pool shapes;     /* of tb_shape */
+  tb_pool contacts;   /* of tb_contact */
+  tb_pool chains;     /* of tb_chain */
+  tb_pool joints;     /* of tb_joint */
+  tb_pool islands;    /* of tb_island: sleeping islands */
   tb_broad_phase broad_phase;
   float hit_event_threshold;
   tb_custom_filter_fn* custom_filter;
@@ -135,7 +136,7 @@ void tb_contact_solver_reset(tb_world* w);
 void tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias);
 void tb_contact_solver_finish(tb_world* w, struct tb_step_context* ctx);
 /* Continuous collision (continuous.c): fast bodies and bullets stop at their
- * first time of impact. */
-void tb_solve_continuous(tb_world* world);
+ * first time of impact. Returns the number of bodies swept. */
+int tb_solve_continuous(tb_world* world);
 
 #endif

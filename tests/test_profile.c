@@ -1,0 +1,96 @@
+/* The per-step profile: stage times that add up to the step, and counts that
+ * agree with tb_world_get_counts. */
+#include "test_util.h"
+
+static tb_world_id pyramid_world(int base) {
+  tb_world_id w = tbt_world(0.0f, -10.0f);
+  tb_body_def gd = tb_default_body_def();
+  tb_body_id ground = tb_create_body(w, &gd);
+  tb_polygon box;
+  tb_make_box(50.0f, 0.5f, &box);
+  tb_shape_def sd = tb_default_shape_def();
+  tb_create_polygon_shape(ground, &sd, &box);
+  for (int row = 0; row < base; ++row)
+    for (int i = 0; i < base - row; ++i)
+      tbt_box_body(w, (float)i - 0.5f * (float)(base - row) + 0.5f, 1.0f + (float)row, 0.5f, 0.5f);
+  return w;
+}
+
+START_TEST(zero_before_the_first_step) {
+  tb_world_id w = pyramid_world(5);
+  tb_profile p = tb_world_get_profile(w);
+  ck_assert(p.step == 0.0f && p.solver == 0.0f && p.awake_body_count == 0 && p.pair_count == 0);
+  tb_destroy_world(w);
+}
+END_TEST
+
+START_TEST(stages_add_up_and_counts_agree) {
+  tb_world_id w = pyramid_world(20);
+  for (int k = 0; k < 30; ++k) ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+  tb_profile p = tb_world_get_profile(w);
+  tb_counts c = tb_world_get_counts(w);
+  ck_assert(p.step > 0.0f && p.solver > 0.0f && p.narrow_phase > 0.0f);
+  ck_assert(p.broad_phase >= 0.0f && p.continuous >= 0.0f && p.islands >= 0.0f);
+  /* The stages are disjoint intervals inside the step; rounding each to float
+   * may add a few ulps. */
+  float sum = p.broad_phase + p.narrow_phase + p.solver + p.continuous + p.islands;
+  ck_assert_msg(sum <= p.step * 1.0001f, "stages %g > step %g", (double)sum, (double)p.step);
+  /* Nothing falls asleep within 0.5 s, so the awake counts are the world's. */
+  ck_assert_int_eq(p.awake_body_count, c.awake_body_count);
+  ck_assert_int_eq(p.awake_body_count, 210);
+  ck_assert_int_eq(p.awake_contact_count, c.awake_contact_count);
+  ck_assert_int_eq(p.pair_count, c.contact_count);
+  ck_assert_int_eq(p.awake_joint_count, 0);
+  ck_assert_int_eq(p.continuous_count, 0);
+  tb_destroy_world(w);
+}
+END_TEST
+
+START_TEST(new_pairs_counted_once) {
+  /* Two boxes dropped apart on the ground: the pairs appear in the first step
+   * and are not new after that. */
+  tb_world_id w = pyramid_world(0);
+  tbt_box_body(w, -3.0f, 0.9f, 0.5f, 0.5f);
+  tbt_box_body(w, 3.0f, 0.9f, 0.5f, 0.5f);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_eq(tb_world_get_profile(w).new_pair_count, 2);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_eq(tb_world_get_profile(w).new_pair_count, 0);
+  ck_assert_int_eq(tb_world_get_profile(w).pair_count, 2);
+  tb_destroy_world(w);
+}
+END_TEST
+
+START_TEST(fast_body_is_counted) {
+  tb_world_id w = pyramid_world(0);
+  tb_body_id b = tbt_box_body(w, 0.0f, 10.0f, 0.1f, 0.1f);
+  tb_body_set_linear_velocity(b, (tb_vec2){30.0f, 0.0f});
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_eq(tb_world_get_profile(w).continuous_count, 1);
+  tb_destroy_world(w);
+}
+END_TEST
+
+START_TEST(stale_world_is_rejected) {
+  tb_world_id w = pyramid_world(3);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  tb_destroy_world(w);
+  tb_profile p = tb_world_get_profile(w);
+  ck_assert(p.step == 0.0f && p.awake_body_count == 0);
+  ck_assert_int_eq(tb_last_result(), TB_ERR_STALE_HANDLE);
+}
+END_TEST
+
+static Suite* profile_suite(void) {
+  Suite* s = suite_create("profile");
+  TCase* tc = tcase_create("profile");
+  tcase_add_test(tc, zero_before_the_first_step);
+  tcase_add_test(tc, stages_add_up_and_counts_agree);
+  tcase_add_test(tc, new_pairs_counted_once);
+  tcase_add_test(tc, fast_body_is_counted);
+  tcase_add_test(tc, stale_world_is_rejected);
+  suite_add_tcase(s, tc);
+  return s;
+}
+
+TB_TEST_MAIN(profile_suite)
