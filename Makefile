@@ -39,7 +39,7 @@ CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 # keep test and shim objects between builds (they are intermediate files otherwise)
 .SECONDARY:
 
-.PHONY: all lib test test-pending tests sanitize install uninstall clean format format-check deps-test
+.PHONY: all lib test tests sanitize install uninstall clean format format-check deps-test
 
 # Each area has its own fragment in mk/ (demo, bench, stress, fuzz, ...). A
 # fragment may add to these hooks:
@@ -99,10 +99,6 @@ test: deps-test
 	@tools/run_tests.sh $(UNIT_BIN) $(REF_BIN) $(EXTRA_TEST_BIN)
 	@tools/check_readme_example.sh $(BUILD)
 	@tools/check_determinism.sh $(BUILD)/tools/determinism build/debug/tools/determinism
-
-# Tests of what is still open in the issues (expected to fail until fixed).
-test-pending: tests
-	@TUMBLE_PENDING=1 tools/run_tests.sh build/tests/test_solver build/tests/reference/test_reference_dynamics
 
 # One scene hashed after 1,000 steps; make test compares an -O0 and an -O2 build.
 $(BUILD)/tools/determinism: $(BUILD)/obj/tools/determinism.o $(LIB_A)

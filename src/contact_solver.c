@@ -8,7 +8,10 @@
  *   s <= 0, biased pass:  -m_n mass_scale (v_n + max(bias_rate s, -push_max))
  *                         - impulse_scale P_n
  *   s <= 0, relax pass:   -m_n v_n
- * and the accumulated P_n stays >= 0. Friction clamps |P_t| <= mu P_n per
+ * and the accumulated P_n stays >= 0. The two points of a manifold are solved
+ * together (a 2x2 block, see solve_wide), so that neither is favoured: solved
+ * one after the other, the first takes more of the load and a symmetric stack
+ * starts to rock. Friction clamps |P_t| <= mu P_n per
  * point and drives the tangential speed to the surfaces' own (conveyor)
  * speed; rolling resistance clamps an angular impulse to rr * sum P_n.
  * The separation is not collided again inside the step: with each body's
@@ -24,7 +27,8 @@
  * vector extensions (SSE on x86-64; plain scalar code elsewhere). The lanes
  * do the same float operations in the same order as one contact alone, so
  * results are deterministic and independent of the optimiser. Contacts that
- * find no free colour are solved one by one after the coloured ones. */
+ * find no free colour are solved one by one after the coloured ones, each in
+ * a block of its own. */
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -59,6 +63,9 @@ typedef struct tb_contact_constraint {
   float friction, restitution, rolling_resistance, tangent_speed;
   float inv_mass_a, inv_i_a, inv_mass_b, inv_i_b;
   float rolling_mass, rolling_impulse;
+  /* both points' normal impulses solved together: K (symmetric) and its inverse */
+  float k11, k12, k22, n11, n12, n22;
+  bool block;
   tb_softness softness;
   tb_constraint_point points[2];
 } tb_contact_constraint;
@@ -72,7 +79,8 @@ typedef struct tb_wide_point {
 typedef struct tb_wide_contact {
   tb_f4 nx, ny, friction, tangent_speed, rolling_resistance, rolling_mass, rolling_impulse;
   tb_f4 ma, ja, mb, jb;
-  tb_f4 bias_rate, mass_scale, impulse_scale;
+  tb_f4 bias_rate, mass_scale;
+  tb_f4 k11, k12, k22, n11, n12, n22, block; /* block: 1 where both points are solved together */
   tb_wide_point p[2];
   int32_t a[4], b[4];
   int32_t source[4]; /* scalar constraint index, -1 for an empty lane */
@@ -84,6 +92,59 @@ typedef struct tb_wide_contact {
 static tb_contact_constraint* constraints(tb_world* w) { return (tb_contact_constraint*)w->constraints; }
 
 /* ---- prepare ------------------------------------------------------------------ */
+
+/* The stiffness of a contact. A soft point is a damped spring k = m_n omega^2
+ * (m_n its effective mass), so under a force F it sinks F / k. With one
+ * hertz for all, k does not grow with the load while the toppling moment of a
+ * column does: the interface of a column of n boxes that carries i of them
+ * must resist a moment of about (i m g)(i/2 box heights) per radian of tilt
+ * with its rotational stiffness 2 k a^2 (points at +-a), and summed over the
+ * column the load wins near n = 12 at 30 Hz: tall stacks buckle slowly. So a
+ * point carrying F (its last impulse over h: the warm start) is stiffened
+ * until F compresses it at most TB_LOAD_COMPRESSION, which keeps the sum
+ * below 1 past 30 boxes, up to h omega = TB_MAX_H_OMEGA, where the soft
+ * constraint is nearly rigid with a position bias of about a sixth of the
+ * error per substep (the Baumgarte factor Box2D 2.4 uses). Against a static or
+ * kinematic body the base stiffness is twice as high. */
+#define TB_LOAD_COMPRESSION 0.002f
+#define TB_MAX_H_OMEGA 1.5f
+static tb_softness load_softness(const tb_step_context* ctx, bool rigid_other, const tb_contact_constraint* cc) {
+  tb_softness base = rigid_other ? ctx->static_softness : ctx->contact_softness;
+  float omega = 2.0f * 3.14159265358979f * (rigid_other ? 2.0f : 1.0f) * ctx->contact_hertz;
+  float need = omega * omega;
+  for (int p = 0; p < cc->point_count; ++p) {
+    const tb_constraint_point* cp = &cc->points[p];
+    float force = cp->normal_impulse * ctx->inv_h;
+    if (cp->normal_mass > 0.0f) need = fmaxf(need, force / (cp->normal_mass * TB_LOAD_COMPRESSION));
+  }
+  if (!(need > omega * omega)) return base;
+  float stiff = fminf(sqrtf(need), TB_MAX_H_OMEGA * ctx->inv_h);
+  if (!(stiff > omega)) return base;
+  return tb_make_softness(stiff / (2.0f * 3.14159265358979f), ctx->contact_damping_ratio, ctx->h);
+}
+
+/* The 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
+ * and its inverse. Like Box2D 2.4, points so close together that K is near
+ * singular (condition number over ~1000) are solved one after the other. */
+static void block_terms(tb_contact_constraint* cc, float ma, float mb, float ja, float jb) {
+  cc->block = false;
+  cc->k11 = cc->k12 = cc->k22 = cc->n11 = cc->n12 = cc->n22 = 0.0f;
+  tb_vec2 n = cc->normal;
+  const tb_constraint_point *p1 = &cc->points[0], *p2 = &cc->points[1];
+  float r1a = tb_cross(p1->ra, n), r1b = tb_cross(p1->rb, n);
+  float r2a = tb_cross(p2->ra, n), r2b = tb_cross(p2->rb, n);
+  if (cc->point_count >= 1) cc->k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
+  if (cc->point_count < 2) return;
+  cc->k22 = ma + mb + ja * r2a * r2a + jb * r2b * r2b;
+  cc->k12 = ma + mb + ja * r1a * r2a + jb * r1b * r2b;
+  float det = cc->k11 * cc->k22 - cc->k12 * cc->k12;
+  if (!(cc->k11 * cc->k11 < 1000.0f * det)) return;
+  float inv = 1.0f / det;
+  cc->block = true;
+  cc->n11 = inv * cc->k22;
+  cc->n12 = -inv * cc->k12;
+  cc->n22 = inv * cc->k11;
+}
 
 static void prepare_one(tb_world* w, const tb_step_context* ctx, int index, tb_contact_constraint* cc) {
   const tb_solver_body* states = ctx->states;
@@ -108,9 +169,7 @@ static void prepare_one(tb_world* w, const tb_step_context* ctx, int index, tb_c
   cc->inv_i_b = jb;
   cc->rolling_mass = ja + jb > 0.0f ? 1.0f / (ja + jb) : 0.0f;
   cc->rolling_impulse = ctx->enable_warm_starting ? c->rolling_impulse : 0.0f;
-  /* against a body that does not respond (static, kinematic) the contact is stiffer */
   bool rigid_other = ba->type != TB_DYNAMIC_BODY || bb->type != TB_DYNAMIC_BODY;
-  cc->softness = rigid_other ? ctx->static_softness : ctx->contact_softness;
   cc->point_count = c->manifold.point_count;
   tb_vec2 n = cc->normal;
   tb_vec2 t = tb_right_perp(n);
@@ -138,6 +197,8 @@ static void prepare_one(tb_world* w, const tb_step_context* ctx, int index, tb_c
     cp->tangent_impulse = ctx->enable_warm_starting ? mp->tangent_impulse : 0.0f;
     cp->max_normal_impulse = 0.0f;
   }
+  block_terms(cc, ma, mb, ja, jb);
+  cc->softness = load_softness(ctx, rigid_other, cc);
 }
 
 /* Greedy colouring: the first colour that neither dynamic body uses. Bodies
@@ -177,7 +238,13 @@ static void fill_lane(tb_wide_contact* wc, int lane, const tb_contact_constraint
   wc->jb[lane] = cc->inv_i_b;
   wc->bias_rate[lane] = cc->softness.bias_rate;
   wc->mass_scale[lane] = cc->softness.mass_scale;
-  wc->impulse_scale[lane] = cc->softness.impulse_scale;
+  wc->k11[lane] = cc->k11;
+  wc->k12[lane] = cc->k12;
+  wc->k22[lane] = cc->k22;
+  wc->n11[lane] = cc->n11;
+  wc->n12[lane] = cc->n12;
+  wc->n22[lane] = cc->n22;
+  wc->block[lane] = cc->block ? 1.0f : 0.0f;
   for (int p = 0; p < 2; ++p) {
     const tb_constraint_point* cp = &cc->points[p];
     tb_wide_point* wp = &wc->p[p];
@@ -202,12 +269,9 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int count = w->step_contact_count;
   int n = ctx->static_index + 1;
   /* scalar constraints; colour bits per solver body and the colour of each
-   * constraint in the int scratch; wide blocks (at most count / 4 + one
-   * partial block per colour) */
-  int wide_need = count / 4 + TB_COLORS + 1;
+   * constraint in the int scratch */
   if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
-      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, n + count + 1, sizeof(int)) ||
-      !tb_array_reserve((void**)&w->wide, &w->wide_capacity, wide_need, sizeof(tb_wide_contact)))
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, n + count + 1, sizeof(int)))
     return false;
   tb_contact_constraint* cs = constraints(w);
   for (int k = 0; k < count; ++k) prepare_one(w, ctx, w->step_contacts[k], &cs[k]);
@@ -216,8 +280,9 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int color_count[TB_COLORS + 1];
   color_constraints(w, ctx, color_of, color_count);
 
-  /* blocks of four per colour, in constraint order (deterministic) */
-  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+  /* Blocks of four per colour, in constraint order (deterministic), then one
+   * block per contact that found no colour (one live lane each, solved one
+   * after the other). */
   int block_start[TB_COLORS + 1];
   int blocks = 0;
   for (int c = 0; c < TB_COLORS; ++c) {
@@ -225,6 +290,9 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
     blocks += (color_count[c] + 3) / 4;
   }
   block_start[TB_COLORS] = blocks;
+  blocks += color_count[TB_COLORS];
+  if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, sizeof(tb_wide_contact))) return false;
+  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   w->wide_count = blocks;
   const tb_contact_constraint empty = {.a = ctx->static_index,
                                        .b = ctx->static_index,
@@ -234,110 +302,17 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
     wide[b].rolling = 0;
     for (int lane = 0; lane < 4; ++lane) fill_lane(&wide[b], lane, &empty, -1);
   }
-  int filled[TB_COLORS];
+  int filled[TB_COLORS + 1];
   memset(filled, 0, sizeof filled);
-  w->overflow_count = 0;
-  int* overflow = color_of; /* reused in place: overflow indices never overtake k */
   for (int k = 0; k < count; ++k) {
     int c = color_of[k];
-    if (c == TB_COLORS) {
-      overflow[w->overflow_count++] = k;
-      continue;
-    }
     int slot = filled[c]++;
-    fill_lane(&wide[block_start[c] + slot / 4], slot % 4, &cs[k], k);
+    if (c == TB_COLORS)
+      fill_lane(&wide[block_start[c] + slot], 0, &cs[k], k);
+    else
+      fill_lane(&wide[block_start[c] + slot / 4], slot % 4, &cs[k], k);
   }
-  w->overflow = overflow;
   return true;
-}
-
-/* ---- scalar solve (overflow contacts) -------------------------------------- */
-
-static void warm_start_one(tb_contact_constraint* cc, tb_solver_body* states) {
-  tb_solver_body* sa = &states[cc->a];
-  tb_solver_body* sb = &states[cc->b];
-  tb_vec2 va = sa->v, vb = sb->v;
-  float wa = sa->w, wb = sb->w;
-  tb_vec2 n = cc->normal, t = tb_right_perp(n);
-  for (int p = 0; p < 2; ++p) {
-    const tb_constraint_point* cp = &cc->points[p];
-    tb_vec2 P = tb_add(tb_scale(cp->normal_impulse, n), tb_scale(cp->tangent_impulse, t));
-    wa -= cc->inv_i_a * tb_cross(cp->ra, P);
-    va = tb_mul_add(va, -cc->inv_mass_a, P);
-    wb += cc->inv_i_b * tb_cross(cp->rb, P);
-    vb = tb_mul_add(vb, cc->inv_mass_b, P);
-  }
-  wa -= cc->inv_i_a * cc->rolling_impulse;
-  wb += cc->inv_i_b * cc->rolling_impulse;
-  sa->v = va;
-  sa->w = wa;
-  sb->v = vb;
-  sb->w = wb;
-}
-
-static void solve_one(tb_contact_constraint* cc, tb_solver_body* states, float inv_h, float push, bool use_bias) {
-  tb_solver_body* sa = &states[cc->a];
-  tb_solver_body* sb = &states[cc->b];
-  tb_vec2 va = sa->v, vb = sb->v;
-  float wa = sa->w, wb = sb->w;
-  const float ma = cc->inv_mass_a, mb = cc->inv_mass_b, ja = cc->inv_i_a, jb = cc->inv_i_b;
-  tb_vec2 n = cc->normal, t = tb_right_perp(n);
-  tb_vec2 dp = tb_sub(sb->dp, sa->dp);
-  float total_normal = 0.0f;
-  for (int p = 0; p < 2; ++p) {
-    tb_constraint_point* cp = &cc->points[p];
-    tb_vec2 d = tb_add(dp, tb_sub(tb_cross_sv(sb->da, cp->rb), tb_cross_sv(sa->da, cp->ra)));
-    float s = tb_dot(d, n) + cp->base_separation;
-    float bias = 0.0f, mass_scale = 1.0f, impulse_scale = 0.0f;
-    if (s > 0.0f) {
-      bias = s * inv_h;
-    } else if (use_bias) {
-      bias = fmaxf(cc->softness.bias_rate * s, -push);
-      mass_scale = cc->softness.mass_scale;
-      impulse_scale = cc->softness.impulse_scale;
-    }
-    tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, cp->rb)), tb_add(va, tb_cross_sv(wa, cp->ra)));
-    float vn = tb_dot(dv, n);
-    float impulse = -cp->normal_mass * mass_scale * (vn + bias) - impulse_scale * cp->normal_impulse;
-    float total = fmaxf(cp->normal_impulse + impulse, 0.0f);
-    impulse = total - cp->normal_impulse;
-    cp->normal_impulse = total;
-    cp->max_normal_impulse = fmaxf(cp->max_normal_impulse, total);
-    total_normal += total;
-    tb_vec2 P = tb_scale(impulse, n);
-    va = tb_mul_add(va, -ma, P);
-    wa -= ja * tb_cross(cp->ra, P);
-    vb = tb_mul_add(vb, mb, P);
-    wb += jb * tb_cross(cp->rb, P);
-  }
-  for (int p = 0; p < 2; ++p) {
-    tb_constraint_point* cp = &cc->points[p];
-    tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, cp->rb)), tb_add(va, tb_cross_sv(wa, cp->ra)));
-    float vt = tb_dot(dv, t);
-    float impulse = -cp->tangent_mass * (vt - cc->tangent_speed);
-    float limit = cc->friction * cp->normal_impulse;
-    float total = fminf(fmaxf(cp->tangent_impulse + impulse, -limit), limit);
-    impulse = total - cp->tangent_impulse;
-    cp->tangent_impulse = total;
-    tb_vec2 P = tb_scale(impulse, t);
-    va = tb_mul_add(va, -ma, P);
-    wa -= ja * tb_cross(cp->ra, P);
-    vb = tb_mul_add(vb, mb, P);
-    wb += jb * tb_cross(cp->rb, P);
-  }
-  if (cc->rolling_resistance > 0.0f) {
-    float limit = cc->rolling_resistance * total_normal;
-    float impulse = -cc->rolling_mass * (wb - wa);
-    float total = fminf(fmaxf(cc->rolling_impulse + impulse, -limit), limit);
-    impulse = total - cc->rolling_impulse;
-    cc->rolling_impulse = total;
-    wa -= ja * impulse;
-    wb += jb * impulse;
-  }
-  sa->v = va;
-  sa->w = wa;
-  sb->v = vb;
-  sb->w = wb;
 }
 
 /* ---- wide solve ------------------------------------------------------------ */
@@ -394,33 +369,62 @@ static void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h, 
   wide_body A = gather(states, c->a), B = gather(states, c->b);
   const tb_f4 zero = splat(0.0f), one = splat(1.0f);
   tb_f4 dpx = B.dpx - A.dpx, dpy = B.dpy - A.dpy;
-  tb_f4 total_normal = zero;
+  /* Per point: the soft terms and r = v0 + bias, where v0 is the normal speed
+   * the point would have without its accumulated impulse a (v0 = v_n - K a).
+   * Since mass_scale + impulse_scale = 1, the soft update of one point,
+   * a - m_n mass_scale (v_n + bias) - impulse_scale a, is the same as
+   * x = -mass_scale m_n r: a new total that does not depend on a. */
+  tb_f4 r[2], ms[2], a[2];
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
-    /* da x r = (-da r.y, da r.x), as tb_cross_sv in the scalar path */
+    /* da x r = (-da r.y, da r.x), as tb_cross_sv */
     tb_f4 prax = -A.da * cp->ray, pray = A.da * cp->rax;
     tb_f4 prbx = -B.da * cp->rby, prby = B.da * cp->rbx;
     tb_f4 s = (dpx + (prbx - prax)) * c->nx + (dpy + (prby - pray)) * c->ny + cp->base_separation;
     tb_i4 speculative = s > zero;
-    tb_f4 bias, mass_scale, impulse_scale;
+    tb_f4 bias;
     if (use_bias) {
       bias = blend(speculative, s * inv_h, max4(c->bias_rate * s, splat(-push)));
-      mass_scale = blend(speculative, one, c->mass_scale);
-      impulse_scale = blend(speculative, zero, c->impulse_scale);
+      ms[p] = blend(speculative, one, c->mass_scale);
     } else {
       bias = blend(speculative, s * inv_h, zero);
-      mass_scale = one;
-      impulse_scale = zero;
+      ms[p] = one;
     }
     tb_f4 dvx = (B.vx + -B.w * cp->rby) - (A.vx + -A.w * cp->ray);
     tb_f4 dvy = (B.vy + B.w * cp->rbx) - (A.vy + A.w * cp->rax);
-    tb_f4 vn = dvx * c->nx + dvy * c->ny;
-    tb_f4 impulse = -cp->normal_mass * mass_scale * (vn + bias) - impulse_scale * cp->normal_impulse;
-    tb_f4 total = max4(cp->normal_impulse + impulse, zero);
-    impulse = total - cp->normal_impulse;
-    cp->normal_impulse = total;
-    cp->max_normal_impulse = max4(cp->max_normal_impulse, total);
-    total_normal += total;
+    r[p] = dvx * c->nx + dvy * c->ny + bias;
+    a[p] = cp->normal_impulse;
+  }
+  /* Both points at once (Box2D 2.4's block solver for the mixed LCP
+   * x >= 0, K x + r0 >= 0, complementary; here scaled by mass_scale): the
+   * first case that holds wins: both push; only 1; only 2; neither. Lanes
+   * with one point (or a near-singular K) take the one-point case. */
+  tb_i4 two = c->block > zero;
+  tb_f4 r1 = r[0] - c->k11 * a[0] - c->k12 * a[1]; /* v0_1 + bias_1 */
+  tb_f4 r2 = r[1] - c->k12 * a[0] - c->k22 * a[1];
+  tb_f4 x1 = a[0], x2 = a[1]; /* no case holds (round-off): keep the impulses */
+  tb_i4 none = (r1 >= zero) & (~two | (r2 >= zero));
+  x1 = blend(none, zero, x1);
+  x2 = blend(none, zero, x2);
+  tb_f4 only2 = -ms[1] * c->p[1].normal_mass * r2;
+  tb_i4 second = two & (only2 >= zero) & (r1 + c->k12 * only2 >= zero);
+  x1 = blend(second, zero, x1);
+  x2 = blend(second, only2, x2);
+  tb_f4 only1 = -ms[0] * c->p[0].normal_mass * r1;
+  tb_i4 first = (only1 >= zero) & (~two | (r2 + c->k12 * only1 >= zero));
+  x1 = blend(first, only1, x1);
+  x2 = blend(first, zero, x2);
+  tb_f4 both1 = -ms[0] * (c->n11 * r1 + c->n12 * r2), both2 = -ms[1] * (c->n12 * r1 + c->n22 * r2);
+  tb_i4 both = two & (both1 >= zero) & (both2 >= zero);
+  x1 = blend(both, both1, x1);
+  x2 = blend(both, both2, x2);
+  tb_f4 total_normal = x1 + x2;
+  tb_f4 x[2] = {x1, x2};
+  for (int p = 0; p < 2; ++p) {
+    tb_wide_point* cp = &c->p[p];
+    tb_f4 impulse = x[p] - a[p];
+    cp->normal_impulse = x[p];
+    cp->max_normal_impulse = max4(cp->max_normal_impulse, x[p]);
     tb_f4 Px = impulse * c->nx, Py = impulse * c->ny;
     A.vx -= c->ma * Px;
     A.vy -= c->ma * Py;
@@ -466,8 +470,6 @@ static void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h, 
 void tb_contact_solver_warm_start(tb_world* w, tb_step_context* ctx) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   for (int b = 0; b < w->wide_count; ++b) warm_start_wide(&wide[b], ctx->states);
-  tb_contact_constraint* cs = constraints(w);
-  for (int k = 0; k < w->overflow_count; ++k) warm_start_one(&cs[w->overflow[k]], ctx->states);
 }
 
 /* Without warm starting every substep starts from zero impulses: clamping
@@ -480,21 +482,12 @@ void tb_contact_solver_reset(tb_world* w) {
     for (int p = 0; p < 2; ++p) wide[b].p[p].normal_impulse = wide[b].p[p].tangent_impulse = zero;
     wide[b].rolling_impulse = zero;
   }
-  tb_contact_constraint* cs = constraints(w);
-  for (int k = 0; k < w->overflow_count; ++k) {
-    tb_contact_constraint* cc = &cs[w->overflow[k]];
-    for (int p = 0; p < 2; ++p) cc->points[p].normal_impulse = cc->points[p].tangent_impulse = 0.0f;
-    cc->rolling_impulse = 0.0f;
-  }
 }
 
 void tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   for (int b = 0; b < w->wide_count; ++b)
     solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, use_bias);
-  tb_contact_constraint* cs = constraints(w);
-  for (int k = 0; k < w->overflow_count; ++k)
-    solve_one(&cs[w->overflow[k]], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, use_bias);
 }
 
 /* Newton's restitution on the points that approached faster than the

@@ -163,6 +163,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.inv_h = 1.0f / h;
   ctx.substeps = substeps;
   float contact_hertz = fminf(w->contact_hertz, 0.25f * ctx.inv_h);
+  ctx.contact_hertz = contact_hertz;
+  ctx.contact_damping_ratio = w->contact_damping_ratio;
   ctx.contact_softness = tb_make_softness(contact_hertz, w->contact_damping_ratio, h);
   ctx.static_softness = tb_make_softness(2.0f * contact_hertz, w->contact_damping_ratio, h);
   ctx.joint_softness = tb_make_softness(w->joint_hertz, w->joint_damping_ratio, h);

@@ -39,8 +39,9 @@ typedef struct tb_step_context {
   float dt, inv_dt; /* the whole step */
   float h, inv_h;   /* one substep */
   int substeps;
-  tb_softness contact_softness; /* dynamic against dynamic */
-  tb_softness static_softness;  /* dynamic against static or kinematic: stiffer */
+  float contact_hertz, contact_damping_ratio; /* dynamic against dynamic (after the substep cap) */
+  tb_softness contact_softness;               /* dynamic against dynamic */
+  tb_softness static_softness;                /* dynamic against static or kinematic: stiffer */
   tb_softness joint_softness;
   float contact_push_max_velocity;
   float restitution_threshold;

@@ -60,8 +60,6 @@ typedef struct tb_world {
   int constraint_capacity;
   void* wide; /* coloured blocks of four contacts */
   int wide_capacity, wide_count;
-  int* overflow; /* constraints solved one by one (no free colour) */
-  int overflow_count;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
   int* scratch; /* island search stack and marks */

@@ -416,12 +416,8 @@ static Suite* reference_dynamics_suite(void) {
   tcase_add_test(tc, pendulum_period);
   tcase_add_test(tc, bounce_apex);
   tcase_add_test(tc, incline_slide);
-  /* Still open in issue 4: soft contacts rest 3.3 cm low on a 10-box stack
-   * (Box2D 2.4.1: 1.75 cm) and a 15-box column buckles; TUMBLE_PENDING=1. */
-  if (getenv("TUMBLE_PENDING") != NULL) {
-    tcase_add_test(tc, stack_rest_heights);
-    tcase_add_test(tc, tall_stack_wander);
-  }
+  tcase_add_test(tc, stack_rest_heights);
+  tcase_add_test(tc, tall_stack_wander);
   suite_add_tcase(s, tc);
   return s;
 }
