@@ -966,6 +966,102 @@ int tb_body_get_shapes(tb_body_id body, tb_shape_id* out, int capacity);
 
 /* ------------------------------------------------------------ debug draw -- */
 
+/* Debug draw: the world hands its shapes, joints, contacts and bounding boxes to
+ * the game's drawing functions, in world coordinates (metres), with a colour
+ * that tells each body's state. Games plug in their own renderer; the demos
+ * (demos/render/) draw through it with OpenGL.
+ *
+ * Fill a tb_debug_draw from tb_default_debug_draw(), set the callbacks you have
+ * (a NULL callback means "skip what it would draw") and the switches, then call
+ * tb_world_draw between steps. Order: static bodies' shapes, then the other
+ * bodies' shapes, joints, AABBs, contacts, centres of mass, masses. */
+
+/* A colour: red, green, blue in [0, 1] (sRGB, as a screen shows them) and
+ * alpha (1 opaque, 0 invisible). */
+typedef struct tb_color {
+  float r, g, b, a;
+} tb_color;
+
+/* The colours tb_world_draw uses; tb_default_debug_draw() fills them. A body's
+ * shapes take the first that applies: disabled, static, kinematic, asleep,
+ * bullet, awake. Sensor shapes take sensor (nothing inside) or sensor_active
+ * (some shape overlaps them), whatever their body. */
+typedef struct tb_debug_colors {
+  tb_color static_body;
+  tb_color kinematic_body;
+  tb_color awake_body; /* dynamic and simulated */
+  tb_color asleep_body;
+  tb_color bullet_body; /* awake and is_bullet */
+  tb_color disabled_body;
+  tb_color sensor;
+  tb_color sensor_active;
+  tb_color joint;
+  tb_color aabb;
+  tb_color contact_point;     /* touching (negative separation) */
+  tb_color speculative_point; /* within TB_SPECULATIVE_DISTANCE, not yet touching */
+  tb_color contact_normal;    /* from shape A to shape B */
+  tb_color text;              /* masses */
+} tb_debug_colors;
+
+/* Draws a convex polygon placed by transform: count (3 to
+ * TB_MAX_POLYGON_VERTICES) vertices in the polygon's frame, counter-clockwise,
+ * rounded by radius (>= 0: the points within radius of the polygon). Chains of
+ * boxes, walls and grounds come through here. */
+typedef void tb_draw_solid_polygon_fn(tb_transform transform, const tb_vec2* vertices, int count, float radius,
+                                      tb_color color, void* context);
+/* Draws a disc; transform.p is its centre and transform.q its rotation, for a
+ * mark (e.g. a radius towards transform.q) that shows the disc turning. */
+typedef void tb_draw_solid_circle_fn(tb_transform transform, float radius, tb_color color, void* context);
+/* Draws a capsule: the points within radius of the segment p1-p2 (world). */
+typedef void tb_draw_solid_capsule_fn(tb_vec2 p1, tb_vec2 p2, float radius, tb_color color, void* context);
+/* Draws a line segment (segment shapes, chain segments, joints, AABB sides,
+ * contact normals). */
+typedef void tb_draw_segment_fn(tb_vec2 p1, tb_vec2 p2, tb_color color, void* context);
+/* Draws a dot of size pixels across, whatever the zoom (contact points, joint
+ * anchors). */
+typedef void tb_draw_point_fn(tb_vec2 p, float size, tb_color color, void* context);
+/* Draws a frame: transform.p is a body's centre of mass and transform.q its
+ * rotation (e.g. a short red x axis and green y axis). */
+typedef void tb_draw_transform_fn(tb_transform transform, void* context);
+/* Draws text at a world point (optional; used for masses). */
+typedef void tb_draw_string_fn(tb_vec2 p, const char* text, tb_color color, void* context);
+
+typedef struct tb_debug_draw {
+  tb_draw_solid_polygon_fn* draw_solid_polygon;
+  tb_draw_solid_circle_fn* draw_solid_circle;
+  tb_draw_solid_capsule_fn* draw_solid_capsule;
+  tb_draw_segment_fn* draw_segment;
+  tb_draw_point_fn* draw_point;
+  tb_draw_transform_fn* draw_transform;
+  tb_draw_string_fn* draw_string;
+  void* context; /* handed to every callback */
+
+  /* What to draw. Defaults: shapes and joints. */
+  bool draw_shapes;
+  bool draw_joints;
+  bool draw_aabbs;           /* each shape's tight AABB, as four segments */
+  bool draw_contact_points;  /* manifold points of touching, non-sensor contacts */
+  bool draw_contact_normals; /* a segment of normal_length from each point */
+  bool draw_centers_of_mass; /* through draw_transform, for non-static bodies */
+  bool draw_masses;          /* "<mass> kg" at each dynamic body's centre */
+  /* Draw only what overlaps drawing_bounds (e.g. the camera's view); default
+   * false: everything. */
+  bool use_drawing_bounds;
+  tb_aabb drawing_bounds;
+  float normal_length; /* metres, > 0, default 0.3 */
+  float point_size;    /* pixels, > 0, default 5 */
+  tb_debug_colors colors;
+} tb_debug_draw;
+
+/* Callbacks NULL, shapes and joints on, the default colours. */
+tb_debug_draw tb_default_debug_draw(void);
+
+/* Draws the world through the callbacks. Errors: NULL draw, a null or stale
+ * world, a call from inside tb_world_step (TB_ERR_LOCKED), non-finite or
+ * non-positive normal_length or point_size, drawing bounds that are not finite
+ * or have lower > upper (when used). The world is never changed. */
+tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw);
+
 #ifdef __cplusplus
 }
 #endif

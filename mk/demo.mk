@@ -1,9 +1,67 @@
-# make demo: the demos (issue 5). Included by the Makefile.
-DEMO_BIN := $(BUILD)/tumble-trajectory
-.PHONY: demo
-$(DEMO_BIN): $(BUILD)/obj/demos/trajectory.o $(LIB_A)
-	$(CC) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
+# make demo, make docs-images and the renderer tests (issue 5). Included by the Makefile.
+#
+# tumble-demo renders the scene catalogue headless: OSMesa (software OpenGL, no
+# display, no GPU; never also -lGL, whose symbols would clash) and libpng.
+DEMO_PKGS := osmesa libpng
+DEMO_CFLAGS = $(shell pkg-config --cflags $(DEMO_PKGS) 2>/dev/null)
+DEMO_LIBS = $(shell pkg-config --libs $(DEMO_PKGS) 2>/dev/null || echo -lOSMesa -lpng)
+DEMO_BIN := $(BUILD)/tumble-demo
+RENDER_SRC := $(wildcard demos/render/*.c)
+RENDER_OBJ := $(RENDER_SRC:%.c=$(BUILD)/obj/%.o)
+SCENES_OBJ = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard demos/scenes/*.c))
+# Mesa would otherwise write shader caches under $HOME on every run.
+DEMO_ENV := MESA_SHADER_CACHE_DISABLE=true
 
-demo: $(DEMO_BIN)
-	$(DEMO_BIN)
+$(BUILD)/obj/demos/render/%.o: demos/render/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) $(DEMO_CFLAGS) -c $< -o $@
 
+$(BUILD)/obj/demos/tumble_demo.o: demos/tumble_demo.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) $(DEMO_CFLAGS) -Idemos -c $< -o $@
+
+$(DEMO_BIN): $(BUILD)/obj/demos/tumble_demo.o $(RENDER_OBJ) $(SCENES_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(DEMO_LIBS) $(LDLIBS_ALL)
+
+# The gallery: every scene of the catalogue, one 960x540 PNG each after 1.5 s,
+# the six performance scenes at half scale (a quarter of the bodies) so that
+# the whole run stays under a minute on one core.
+DEMO_ARGS ?= --size 960x540 --scale 0.5 --out out
+.PHONY: demo docs-images deps-demo
+deps-demo:
+	@tools/deps.sh demo
+
+demo: deps-demo
+	@$(MAKE) --no-print-directory $(DEMO_BIN)
+	$(DEMO_ENV) $(DEMO_BIN) $(DEMO_ARGS)
+
+# Small pictures of every scene for the README, and one animated GIF.
+DOCS_IMAGES := docs/images
+DOCS_GIF_SCENE := tumbler_mixed
+docs-images: deps-demo
+	@tools/deps.sh video
+	@$(MAKE) --no-print-directory $(DEMO_BIN)
+	$(DEMO_ENV) $(DEMO_BIN) --size 480x270 --scale 0.5 --out $(DOCS_IMAGES)
+	$(DEMO_ENV) $(DEMO_BIN) --scene $(DOCS_GIF_SCENE) --size 480x270 --frames 120 --every 2 --video --out build/docs-gif
+	cp build/docs-gif/$(DOCS_GIF_SCENE).gif $(DOCS_IMAGES)/$(DOCS_GIF_SCENE).gif
+	@echo $(DOCS_IMAGES)/$(DOCS_GIF_SCENE).gif
+
+# ---- renderer tests -------------------------------------------------------------
+RENDER_TEST := $(BUILD)/tests/render/test_render
+$(BUILD)/obj/tests/render/%.o: tests/render/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) $(CHECK_CFLAGS) $(DEMO_CFLAGS) -Idemos -c $< -o $@
+
+$(RENDER_TEST): $(BUILD)/obj/tests/render/test_render.o $(RENDER_OBJ) $(SCENES_OBJ) $(TEST_UTIL_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(CHECK_LIBS) $(DEMO_LIBS) $(LDLIBS_ALL)
+
+# run_tests.sh runs the suite; Mesa's shader cache stays off through this wrapper.
+EXTRA_TEST_BIN += $(BUILD)/tests/render/run_test_render
+EXTRA_TEST_DEPS += demo
+$(BUILD)/tests/render/run_test_render: $(RENDER_TEST)
+	@printf '#!/bin/sh\nMESA_SHADER_CACHE_DISABLE=true exec "%s" "$$@"\n' "$(abspath $(RENDER_TEST))" > $@
+	@chmod +x $@
+
+FORMATTED += demos/render/*.c demos/render/*.h tests/render/*.c

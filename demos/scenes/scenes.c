@@ -5,87 +5,11 @@
  * 0 (tb_default_shape_def()), gravity (0, -10). */
 #include "scenes.h"
 
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define PI_F 3.14159265358979f
-
-/* ------------------------------------------------------------- helpers -- */
-
-static int scaled(int full, float scale, int minimum) {
-  if (!(scale > 0.0f && scale <= 1.0f)) scale = 1.0f;
-  int n = (int)lroundf((float)full * scale);
-  return n < minimum ? minimum : n;
-}
-
-static tb_body_id body_at(tb_world_id world, tb_body_type type, float x, float y, float angle, const char* tag) {
-  tb_body_def bd = tb_default_body_def();
-  bd.type = type;
-  bd.position = (tb_vec2){x, y};
-  bd.angle = angle;
-  bd.user_data = (void*)tag;
-  return tb_create_body(world, &bd);
-}
-
-static tb_shape_def shape_def(float density, float friction, float restitution) {
-  tb_shape_def sd = tb_default_shape_def();
-  sd.density = density;
-  sd.friction = friction;
-  sd.restitution = restitution;
-  return sd;
-}
-
-static void add_box(tb_body_id body, const tb_shape_def* sd, float hx, float hy) {
-  tb_polygon box;
-  if (tb_make_box(hx, hy, &box) == TB_OK) tb_create_polygon_shape(body, sd, &box);
-}
-
-static void add_offset_box(tb_body_id body, const tb_shape_def* sd, float hx, float hy, float cx, float cy) {
-  tb_polygon box;
-  if (tb_make_offset_box(hx, hy, (tb_vec2){cx, cy}, 0.0f, &box) == TB_OK) tb_create_polygon_shape(body, sd, &box);
-}
-
-static void add_circle(tb_body_id body, const tb_shape_def* sd, float radius) {
-  tb_circle c = {{0.0f, 0.0f}, radius};
-  tb_create_circle_shape(body, sd, &c);
-}
-
-/* A static ground: the box [-hx, hx] x [-2 hy, 0] (its top surface at y = 0). */
-static tb_body_id ground(tb_world_id world, float hx, float hy) {
-  tb_body_id g = body_at(world, TB_STATIC_BODY, 0.0f, 0.0f, 0.0f, NULL);
-  tb_shape_def sd = tb_default_shape_def();
-  add_offset_box(g, &sd, hx, hy, 0.0f, -hy);
-  return g;
-}
-
-/* A pyramid of base boxes of half-size h, its base centred at (cx, y0): row i
- * (from the bottom) holds base - i boxes at height (2 i + 1) h. The top box is
- * tagged. */
-static void pyramid(tb_world_id world, int base, float h, float cx, float y0, const char* top_tag) {
-  tb_shape_def sd = tb_default_shape_def(); /* density 1, friction 0.6 */
-  tb_polygon box;
-  if (tb_make_box(h, h, &box) != TB_OK) return;
-  for (int i = 0; i < base; ++i) {
-    float y = y0 + (float)(2 * i + 1) * h;
-    for (int j = i; j < base; ++j) {
-      float x = cx + (float)(2 * (j - i) + i + 1 - base) * h;
-      tb_body_id b = body_at(world, TB_DYNAMIC_BODY, x, y, 0.0f, i == base - 1 ? top_tag : NULL);
-      tb_create_polygon_shape(b, &sd, &box);
-    }
-  }
-}
-
-/* The rain's generator: xorshift32 mapped to [lo, hi) through a double, the
- * same arithmetic as tools/bench_tree.c and tools/bench_dynamics_b2.cpp. */
-static float rain_rnd(uint32_t* state, float lo, float hi) {
-  uint32_t x = *state;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  *state = x;
-  return lo + (hi - lo) * (float)((double)x / 4294967296.0);
-}
+#include "gallery.h"
+#include "scene_build.h"
 
 /* ------------------------------------------------ performance scenes -- */
 
@@ -176,9 +100,9 @@ static void build_rain(tb_world_id world, float scale) {
   tb_world_set_gravity(world, (tb_vec2){0.0f, -10.0f});
   tb_body_id g = body_at(world, TB_STATIC_BODY, 0.0f, 0.0f, 0.0f, NULL);
   tb_shape_def gd = tb_default_shape_def();
-  add_offset_box(g, &gd, 21.0f, 1.0f, 0.0f, -1.0f);
-  add_offset_box(g, &gd, 1.0f, 25.0f, -21.0f, 25.0f);
-  add_offset_box(g, &gd, 1.0f, 25.0f, 21.0f, 25.0f);
+  add_offset_box(g, &gd, 21.0f, 1.0f, 0.0f, -1.0f, 0.0f);
+  add_offset_box(g, &gd, 1.0f, 25.0f, -21.0f, 25.0f, 0.0f);
+  add_offset_box(g, &gd, 1.0f, 25.0f, 21.0f, 25.0f, 0.0f);
 
   if (!(scale > 0.0f && scale <= 1.0f)) scale = 1.0f;
   int count = (int)lroundf(2000.0f * scale * scale);
@@ -189,10 +113,10 @@ static void build_rain(tb_world_id world, float scale) {
   tb_shape_def sd = tb_default_shape_def();
   for (int k = 0; k < count; ++k) {
     int c = k % columns, r = k / columns;
-    bool circle = rain_rnd(&rng, 0.0f, 1.0f) < 0.5f;
-    float s = rain_rnd(&rng, 0.15f, 0.35f);
-    float angle = rain_rnd(&rng, -PI_F, PI_F);
-    float jx = rain_rnd(&rng, -1.0f, 1.0f), jy = rain_rnd(&rng, -1.0f, 1.0f);
+    bool circle = scene_rnd(&rng, 0.0f, 1.0f) < 0.5f;
+    float s = scene_rnd(&rng, 0.15f, 0.35f);
+    float angle = scene_rnd(&rng, -PI_F, PI_F);
+    float jx = scene_rnd(&rng, -1.0f, 1.0f), jy = scene_rnd(&rng, -1.0f, 1.0f);
     float extent = circle ? s : 1.41421356f * s;
     float x = -19.0f + ((float)c + 0.5f) * cell_w + jx * (0.5f * cell_w - extent);
     float y = 10.0f + ((float)r + 0.5f) * cell_h + jy * (0.5f * cell_h - extent);
@@ -250,10 +174,10 @@ static void build_tumbler(tb_world_id world, float scale) {
   bd.user_data = (void*)"container";
   tb_body_id c = tb_create_body(world, &bd);
   tb_shape_def wall = shape_def(50.0f, 0.6f, 0.0f);
-  add_offset_box(c, &wall, 0.5f, 10.0f, 10.0f, 0.0f);
-  add_offset_box(c, &wall, 0.5f, 10.0f, -10.0f, 0.0f);
-  add_offset_box(c, &wall, 10.0f, 0.5f, 0.0f, 10.0f);
-  add_offset_box(c, &wall, 10.0f, 0.5f, 0.0f, -10.0f);
+  add_offset_box(c, &wall, 0.5f, 10.0f, 10.0f, 0.0f, 0.0f);
+  add_offset_box(c, &wall, 0.5f, 10.0f, -10.0f, 0.0f, 0.0f);
+  add_offset_box(c, &wall, 10.0f, 0.5f, 0.0f, 10.0f, 0.0f);
+  add_offset_box(c, &wall, 10.0f, 0.5f, 0.0f, -10.0f, 0.0f);
 
   const int full = 45;
   int n = scaled(full, scale, 1);
@@ -323,7 +247,7 @@ static void build_newtons_cradle(tb_world_id world, float scale) {
   const float radius = 0.5f, length = 4.0f, top = 10.0f;
   tb_body_id bar = body_at(world, TB_STATIC_BODY, 0.0f, top, 0.0f, NULL);
   tb_shape_def bd = tb_default_shape_def();
-  add_offset_box(bar, &bd, 4.0f, 0.1f, 0.0f, 0.1f);
+  add_offset_box(bar, &bd, 4.0f, 0.1f, 0.0f, 0.1f, 0.0f);
   tb_shape_def sd = shape_def(1.0f, 0.0f, 1.0f);
   for (int i = 0; i < count; ++i) {
     float px = (float)(i - count / 2) * 2.0f * radius;
@@ -368,37 +292,6 @@ static void build_chain_100(tb_world_id world, float scale) {
   }
 }
 
-/* bullet_block: two identical 1 m blocks (half 0.5, 1 kg) rest on a ground 60 m
- * wide: "block_center" at (-10, 0.5) and "block_offset" at (10, 0.5). Each is
- * hit by a bullet (circle radius 0.05, density 5, is_bullet, restitution 0)
- * starting 2 m left of its face at 100 m/s along +x: "bullet_center" at the
- * block's centre height (y = 0.5), "bullet_offset" 0.35 m above it (y = 0.85).
- * Same impulse, so the same linear momentum; only the second block spins. */
-static void build_bullet_block(tb_world_id world, float scale) {
-  (void)scale;
-  tb_world_set_gravity(world, (tb_vec2){0.0f, -10.0f});
-  ground(world, 30.0f, 1.0f);
-  tb_shape_def sd = tb_default_shape_def();
-  tb_body_id a = body_at(world, TB_DYNAMIC_BODY, -10.0f, 0.5f, 0.0f, "block_center");
-  add_box(a, &sd, 0.5f, 0.5f);
-  tb_body_id b = body_at(world, TB_DYNAMIC_BODY, 10.0f, 0.5f, 0.0f, "block_offset");
-  add_box(b, &sd, 0.5f, 0.5f);
-  tb_shape_def bullet = shape_def(5.0f, 0.6f, 0.0f);
-  const float xs[2] = {-10.0f - 0.5f - 2.0f, 10.0f - 0.5f - 2.0f};
-  const float ys[2] = {0.5f, 0.85f};
-  const char* tags[2] = {"bullet_center", "bullet_offset"};
-  for (int k = 0; k < 2; ++k) {
-    tb_body_def bd = tb_default_body_def();
-    bd.type = TB_DYNAMIC_BODY;
-    bd.position = (tb_vec2){xs[k], ys[k]};
-    bd.linear_velocity = (tb_vec2){100.0f, 0.0f};
-    bd.is_bullet = true;
-    bd.user_data = (void*)tags[k];
-    tb_body_id p = tb_create_body(world, &bd);
-    add_circle(p, &bullet, 0.05f);
-  }
-}
-
 /* -------------------------------------------------------------- catalogue -- */
 
 #define BOX(x0, y0, x1, y1)      \
@@ -407,28 +300,57 @@ static void build_bullet_block(tb_world_id world, float scale) {
   }
 
 static const tb_scene k_scenes[] = {
+    /* the six performance scenes: keep in step with tools/bench_dynamics_b2.cpp */
     {"large_pyramid", "5,050 boxes in a pyramid of base 100 on the ground", build_large_pyramid, 500,
-     BOX(-105.0f, -5.0f, 105.0f, 105.0f), NULL, NULL},
+     BOX(-105.0f, -5.0f, 105.0f, 105.0f), NULL, NULL, NULL},
     {"many_pyramids", "20 x 20 pyramids of base 10 on 20 shelves (22,000 boxes)", build_many_pyramids, 200,
-     BOX(-115.0f, -5.0f, 115.0f, 225.0f), NULL, NULL},
+     BOX(-115.0f, -5.0f, 115.0f, 225.0f), NULL, NULL, NULL},
     {"joint_grid", "100 x 100 circles in a grid of revolute joints hanging from 7 anchors", build_joint_grid, 500,
-     BOX(-160.0f, -160.0f, 160.0f, 10.0f), NULL, NULL},
+     BOX(-160.0f, -160.0f, 160.0f, 10.0f), NULL, NULL, NULL},
     {"rain", "2,000 circles and boxes dropped at once from 10 to 100 m into a container", build_rain, 1000,
-     BOX(-25.0f, -5.0f, 25.0f, 110.0f), NULL, NULL},
+     BOX(-25.0f, -5.0f, 25.0f, 110.0f), NULL, NULL, NULL},
     {"smash", "an 8 m box at 40 m/s into a sleeping 120 x 80 grid of 0.4 m boxes, no gravity", build_smash, 300,
-     BOX(-100.0f, -300.0f, 400.0f, 300.0f), NULL, NULL},
+     BOX(-100.0f, -300.0f, 400.0f, 300.0f), NULL, NULL, NULL},
     {"tumbler", "2,025 boxes of 0.25 m in a 20 m box turning at 25 deg/s", build_tumbler, 750,
-     BOX(-16.0f, -6.0f, 16.0f, 26.0f), NULL, NULL},
-    {"vertical_stack", "15 boxes stacked on the ground", build_vertical_stack, 600, BOX(-20.0f, -2.0f, 20.0f, 20.0f), NULL, NULL},
-    {"pyramid_20", "210 boxes in a pyramid of base 20", build_pyramid_20, 600, BOX(-40.0f, -2.0f, 40.0f, 25.0f), NULL, NULL},
+     BOX(-16.0f, -6.0f, 16.0f, 26.0f), NULL, NULL, NULL},
+    /* the gallery: structure scenes */
+    {"vertical_stack", "15 boxes stacked on the ground", build_vertical_stack, 600, BOX(-20.0f, -2.0f, 20.0f, 20.0f),
+     NULL, NULL, NULL},
+    {"pyramid_20", "210 boxes in a pyramid of base 20", build_pyramid_20, 600, BOX(-40.0f, -2.0f, 40.0f, 25.0f), NULL,
+     NULL, NULL},
     {"mass_ratio", "a 20 m box (400 kg) resting on two 1 m boxes (1 kg)", build_mass_ratio, 600,
-     BOX(-40.0f, -2.0f, 40.0f, 25.0f), NULL, NULL},
+     BOX(-40.0f, -2.0f, 40.0f, 25.0f), NULL, NULL, NULL},
     {"newtons_cradle", "5 touching balls on distance joints, restitution 1, the first raised 45 deg",
-     build_newtons_cradle, 600, BOX(-10.0f, 0.0f, 10.0f, 12.0f), NULL, NULL},
+     build_newtons_cradle, 600, BOX(-10.0f, 0.0f, 10.0f, 12.0f), NULL, NULL, NULL},
     {"chain_100", "a 100-link chain swinging down from a pivot", build_chain_100, 600,
-     BOX(-105.0f, -105.0f, 105.0f, 5.0f), NULL, NULL},
-    {"bullet_block", "two resting 1 m blocks, each hit by a 100 m/s bullet: at the centre, 0.35 m off",
-     build_bullet_block, 120, BOX(-30.0f, -1.0f, 30.0f, 10.0f), NULL, NULL},
+     BOX(-105.0f, -105.0f, 105.0f, 5.0f), NULL, NULL, NULL},
+    /* the gallery: demo scenes (gallery.c) */
+    {"bullet_block", "two blocks shot from below, at the centre and 0.25 m off: same rise, one spins",
+     build_bullet_block, 150, BOX(-10.0f, -1.0f, 10.0f, 10.0f), update_bullet_block, NULL, NULL},
+    {"card_house", "a house of cards four storeys high: leaning pairs under flat cards", build_card_house, 600,
+     BOX(-6.0f, -1.0f, 6.0f, 8.0f), NULL, NULL, NULL},
+    {"pendulum", "a rod and bob on a revolute joint, released horizontal", build_pendulum, 600,
+     BOX(-6.0f, -1.0f, 6.0f, 11.0f), NULL, NULL, NULL},
+    {"double_pendulum", "two rods on revolute joints, released horizontal: chaotic", build_double_pendulum, 900,
+     BOX(-7.0f, -1.0f, 7.0f, 12.0f), NULL, NULL, NULL},
+    {"chain_bridge", "a bridge of 20 planks on revolute joints, loaded with falling boxes and balls",
+     build_chain_bridge, 600, BOX(-14.0f, -1.0f, 14.0f, 14.0f), NULL, NULL, NULL},
+    {"ragdolls", "6 ragdolls of capsules on revolute joints with limits, falling down a staircase", build_ragdolls, 600,
+     BOX(-16.0f, -1.0f, 16.0f, 20.0f), NULL, NULL, NULL},
+    {"car", "a car with sprung, motored wheel joints driving over hilly chain terrain", build_car, 1200,
+     BOX(-25.0f, -10.0f, 205.0f, 25.0f), NULL, "car", NULL},
+    {"dominoes", "a pendulum knocks over a row of 30 dominoes", build_dominoes, 600, BOX(-12.0f, -1.0f, 16.0f, 6.0f),
+     NULL, NULL, NULL},
+    {"tumbler_mixed", "a 10 m box turning at 30 deg/s, full of circles, capsules, boxes and polygons",
+     build_tumbler_mixed, 900, BOX(-10.0f, -4.0f, 10.0f, 16.0f), NULL, NULL, NULL},
+    {"rain_over_time", "circles, boxes and capsules spawned one per step into a container (600 in 10 s)",
+     build_rain_over_time, 900, BOX(-13.0f, -1.0f, 13.0f, 32.0f), update_rain_over_time, NULL, NULL},
+    {"conveyor", "boxes carried by two conveyor belts (tangent speed 2 m/s), right then left", build_conveyor, 900,
+     BOX(-13.0f, -1.0f, 13.0f, 12.0f), update_conveyor, NULL, NULL},
+    {"one_way_platform", "bodies jump up through a one-way platform (pre-solve callback) and land on it",
+     build_one_way_platform, 600, BOX(-8.0f, -1.0f, 8.0f, 12.0f), NULL, NULL, configure_one_way_platform},
+    {"sensors", "balls roll down a ramp through five sensor boxes that light up while occupied", build_sensors, 900,
+     BOX(-14.0f, -1.0f, 14.0f, 10.0f), update_sensors, NULL, NULL},
 };
 
 #define SCENE_COUNT ((int)(sizeof k_scenes / sizeof k_scenes[0]))
@@ -448,6 +370,12 @@ const tb_scene* tb_scene_find(const char* name) {
 }
 
 int tb_scene_is_performance(const tb_scene* scene) { return scene >= k_scenes && scene < k_scenes + PERFORMANCE_COUNT; }
+
+tb_world_id tb_scene_create_world(const tb_scene* scene) {
+  tb_world_def def = tb_default_world_def();
+  if (scene != NULL && scene->configure != NULL) scene->configure(&def);
+  return tb_create_world(&def);
+}
 
 /* ---------------------------------------------------------------- checks -- */
 

@@ -1,22 +1,27 @@
 /* The scene catalogue: one set of scenes shared by the demos, the dynamics
  * benchmark (tools/bench_dynamics.c) and the tests. Public tumble API only.
  *
- * Use: create a world from tb_default_world_def(), then call scene->build(world,
- * scale). Each build sets the world's gravity itself ((0, -10) everywhere but
- * smash, which has none) and creates every body; nothing else about the world is
- * changed. Step at 60 Hz with 4 substeps for scene->default_steps steps,
- * calling scene->update (when not NULL) before each step.
+ * Use: create the world with tb_scene_create_world(scene), which is
+ * tb_default_world_def() changed by the scene's configure hook (only
+ * one_way_platform has one: its pre-solve callback), then call
+ * scene->build(world, scale). Each build sets the world's gravity itself
+ * ((0, -10) everywhere but smash, which has none) and creates its bodies;
+ * nothing else about the world is changed. Step at 60 Hz with 4 substeps for
+ * scene->default_steps steps, calling scene->update (when not NULL) before
+ * each step: some scenes spawn bodies or lodge bullets there.
  *
  * scale in (0, 1] shrinks the six performance scenes for quick runs: every count
  * along a side (pyramid base, pyramids per row and column, grid sides, tumbler
  * grid) is multiplied by scale, so the body count goes as scale^2 (rain spawns
- * 2,000 scale^2 bodies). The structure scenes (vertical_stack ... bullet_block)
- * are small and ignore scale. A scale outside (0, 1] is taken as 1.
+ * 2,000 scale^2 bodies). The structure scenes (vertical_stack ... chain_100)
+ * and the gallery scenes are small and ignore scale. A scale outside (0, 1] is
+ * taken as 1.
  *
  * Named bodies: a few bodies carry a tag, a static string, as user data (the
- * top box of a pyramid, the bullets, the heavy box ...; see scenes.c). Every
- * other body a scene creates has NULL user data. Find them with
- * tb_scene_find_body.
+ * top box of a pyramid, the bullets, the heavy box ...; see scenes.c and
+ * gallery.c; shapes of a few static parts carry one too: "platform",
+ * "sensor", "belt_upper", "belt_lower"). Every other body a scene creates has
+ * NULL user data. Find bodies with tb_scene_find_body.
  *
  * tools/bench_dynamics_b2.cpp rebuilds the six performance scenes with Box2D
  * 2.4.1 from the same parameters: change both together. */
@@ -42,15 +47,25 @@ typedef struct tb_scene {
   void (*update)(tb_world_id world, int step);
   /* NULL (the camera fits bounds), or the tag of a body the camera follows. */
   const char* follow_tag;
+  /* NULL, or changes the world definition before the world is created, for
+   * what only a definition can set (the one-way platform's pre-solve
+   * callback). tb_scene_create_world applies it. */
+  void (*configure)(tb_world_def* def);
 } tb_scene;
 
 /* All scenes: the six performance scenes first (large_pyramid, many_pyramids,
- * joint_grid, rain, smash, tumbler), then the structure scenes. */
+ * joint_grid, rain, smash, tumbler), then the gallery: the structure scenes
+ * and the demo scenes of gallery.c (every scene that is not a performance
+ * scene). */
 const tb_scene* tb_scenes(int* count);
 /* NULL when there is no scene of that name. */
 const tb_scene* tb_scene_find(const char* name);
 /* Whether the scene is one of the six the benchmark times. */
 int tb_scene_is_performance(const tb_scene* scene);
+
+/* A world for the scene: tb_default_world_def() changed by scene->configure
+ * (when not NULL). Build the scene in it next. The null handle on error. */
+tb_world_id tb_scene_create_world(const tb_scene* scene);
 
 /* The body whose user data is the tag (compared as a string), or the null
  * handle. Looks through every shape of the world: for setup and checks, not per

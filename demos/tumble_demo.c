@@ -1,0 +1,326 @@
+/* tumble-demo: renders the scene catalogue (demos/scenes/) headless with
+ * OSMesa into PNG images, frame sequences and, with ffmpeg, MP4 and GIF.
+ * Run with --help for the options. */
+#define _POSIX_C_SOURCE 200809L /* mkdir */
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "render/camera.h"
+#include "render/gl_draw.h"
+#include "render/offscreen.h"
+#include "render/png_write.h"
+#include "render/video.h"
+#include "scenes/scenes.h"
+#include "tumble.h"
+
+#define STEP_HZ 60
+#define SUBSTEPS 4
+/* The follow camera shows at most this many metres across. */
+#define FOLLOW_VIEW_WIDTH 40.0f
+
+typedef struct options {
+  const char* scene; /* NULL: every scene of the catalogue */
+  int frames;
+  int every; /* steps per frame */
+  int width, height;
+  float scale;
+  const char* out;
+  bool video;
+  bool overlay;
+} options;
+
+static void usage(FILE* to) {
+  fprintf(to,
+          "usage: tumble-demo [options]\n"
+          "Steps scenes of the catalogue at %d Hz (%d substeps) and renders them headless (OSMesa).\n"
+          "\n"
+          "  --list          print the scenes with a one-line description and exit\n"
+          "  --scene NAME    render only this scene (default: every scene, the gallery)\n"
+          "  --frames N      frames to write per scene (default 1)\n"
+          "  --every K       steps between frames; frame i shows the world after (i + 1) K steps\n"
+          "                  (default 90, i.e. 1.5 s, for one frame; 1 for a sequence)\n"
+          "  --size WxH      image size in pixels (default 1280x720)\n"
+          "  --scale S       shrink the six performance scenes, 0 < S <= 1 (default 1)\n"
+          "  --out DIR       output folder (default out), created when missing\n"
+          "  --video         also make DIR/NAME.mp4 and DIR/NAME.gif with ffmpeg (needs N >= 2)\n"
+          "  --no-overlay    no scene name, simulated time and step time in the corner\n"
+          "  --help          this text\n"
+          "\n"
+          "One frame goes to DIR/NAME.png; a sequence to DIR/NAME/frame_00000.png ...\n",
+          STEP_HZ, SUBSTEPS);
+}
+
+static bool parse_int(const char* text, int lo, int hi, int* out) {
+  if (text == NULL || *text == '\0') return false;
+  char* end = NULL;
+  errno = 0;
+  long v = strtol(text, &end, 10);
+  if (errno != 0 || *end != '\0' || v < lo || v > hi) return false;
+  *out = (int)v;
+  return true;
+}
+
+static bool parse_size(const char* text, int* w, int* h) {
+  if (text == NULL) return false;
+  const char* x = strchr(text, 'x');
+  if (x == NULL || x - text >= 16) return false;
+  char first[16];
+  memcpy(first, text, (size_t)(x - text));
+  first[x - text] = '\0';
+  return parse_int(first, 16, 8192, w) && parse_int(x + 1, 16, 8192, h);
+}
+
+static int bad_usage(const char* fmt, const char* arg) {
+  fprintf(stderr, "tumble-demo: ");
+  fprintf(stderr, fmt, arg == NULL ? "(missing)" : arg);
+  fprintf(stderr, "\n(try tumble-demo --help)\n");
+  return 2;
+}
+
+static void list_scenes(void) {
+  int count = 0;
+  const tb_scene* scenes = tb_scenes(&count);
+  for (int i = 0; i < count; ++i) printf("%-18s %s\n", scenes[i].name, scenes[i].description);
+}
+
+/* mkdir -p */
+static bool make_dirs(const char* path) {
+  char buf[PATH_MAX];
+  if (snprintf(buf, sizeof buf, "%s", path) >= (int)sizeof buf) return false;
+  for (char* p = buf + 1; *p != '\0'; ++p) {
+    if (*p != '/') continue;
+    *p = '\0';
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST) return false;
+    *p = '/';
+  }
+  return mkdir(buf, 0777) == 0 || errno == EEXIST;
+}
+
+/* The box of every shape, clipped to the scene's bounds (a 200 m ground under
+ * a 20 m pyramid would otherwise set the zoom). */
+static tb_aabb content_box(tb_world_id world, tb_aabb bounds) {
+  int n = tb_scene_collect_bodies(world, NULL, 0);
+  tb_body_id* bodies = malloc(sizeof *bodies * (size_t)(n > 0 ? n : 1));
+  tb_aabb box = {{bounds.upper.x, bounds.upper.y}, {bounds.lower.x, bounds.lower.y}}; /* empty */
+  if (bodies == NULL) return bounds;
+  n = tb_scene_collect_bodies(world, bodies, n);
+  for (int i = 0; i < n; ++i) {
+    tb_shape_id shapes[64];
+    int count = tb_body_get_shapes(bodies[i], shapes, 64);
+    for (int k = 0; k < count; ++k) {
+      tb_aabb a = tb_shape_get_aabb(shapes[k]);
+      box.lower.x = fminf(box.lower.x, a.lower.x);
+      box.lower.y = fminf(box.lower.y, a.lower.y);
+      box.upper.x = fmaxf(box.upper.x, a.upper.x);
+      box.upper.y = fmaxf(box.upper.y, a.upper.y);
+    }
+  }
+  free(bodies);
+  box.lower.x = fmaxf(box.lower.x, bounds.lower.x);
+  box.lower.y = fmaxf(box.lower.y, bounds.lower.y);
+  box.upper.x = fminf(box.upper.x, bounds.upper.x);
+  box.upper.y = fminf(box.upper.y, bounds.upper.y);
+  return box.lower.x < box.upper.x && box.lower.y < box.upper.y ? box : bounds;
+}
+
+/* The camera fits what the scene has shown so far (the union of the content
+ * boxes of every frame: it zooms out as things spread, never in, so a video
+ * does not wobble), or follows the scene's tagged body. */
+static tbr_camera scene_camera(const tb_scene* scene, tb_world_id world, tb_body_id followed, tb_aabb* seen, int width,
+                               int height) {
+  if (!tb_body_id_is_null(followed) && tb_body_is_valid(followed)) {
+    float span = scene->bounds.upper.x - scene->bounds.lower.x;
+    float view = span < FOLLOW_VIEW_WIDTH ? span : FOLLOW_VIEW_WIDTH;
+    return tbr_camera_follow(tb_body_get_position(followed), view, scene->bounds, width, height);
+  }
+  tb_aabb box = content_box(world, scene->bounds);
+  if (seen->lower.x <= seen->upper.x) {
+    box.lower.x = fminf(box.lower.x, seen->lower.x);
+    box.lower.y = fminf(box.lower.y, seen->lower.y);
+    box.upper.x = fmaxf(box.upper.x, seen->upper.x);
+    box.upper.y = fmaxf(box.upper.y, seen->upper.y);
+  }
+  *seen = box;
+  /* room at the top for the overlay panel */
+  box.upper.y += 0.2f * (box.upper.y - box.lower.y);
+  return tbr_camera_fit(box, 0.04f, width, height);
+}
+
+typedef struct renderer {
+  tbr_offscreen* target;
+  tbr_gl* gl;
+} renderer;
+
+static bool render_frame(renderer* r, const options* o, const tb_scene* scene, tb_world_id world, tb_body_id followed,
+                         tb_aabb* seen, double step_ms, const char* path) {
+  tbr_camera camera = scene_camera(scene, world, followed, seen, o->width, o->height);
+  tbr_offscreen_begin(r->target);
+  tbr_gl_begin(r->gl, &camera, TBR_BACKGROUND);
+  tb_debug_draw draw = tbr_gl_debug_draw(r->gl);
+  if (tb_world_draw(world, &draw) != TB_OK) {
+    fprintf(stderr, "tumble-demo: %s\n", tb_last_error());
+    return false;
+  }
+  if (o->overlay) {
+    char stats[160];
+    tb_counts counts = tb_world_get_counts(world);
+    snprintf(stats, sizeof stats, "t = %.2f s   step %.2f ms   %d bodies   %d awake", tb_world_get_time(world), step_ms,
+             counts.body_count, counts.awake_body_count);
+    const char* lines[3] = {scene->name, scene->description, stats};
+    tbr_gl_overlay(r->gl, lines, 3);
+  }
+  if (!tbr_gl_flush(r->gl)) fprintf(stderr, "tumble-demo: out of memory, %s is incomplete\n", path);
+  const uint8_t* pixels = tbr_offscreen_finish(r->target);
+  char error[512];
+  if (!tbr_write_png(path, pixels, o->width, o->height, error, sizeof error)) {
+    fprintf(stderr, "tumble-demo: %s\n", error);
+    return false;
+  }
+  return true;
+}
+
+static bool run_scene(renderer* r, const options* o, const tb_scene* scene) {
+  tb_world_id world = tb_scene_create_world(scene);
+  if (tb_world_id_is_null(world)) {
+    fprintf(stderr, "tumble-demo: %s: %s\n", scene->name, tb_last_error());
+    return false;
+  }
+  scene->build(world, o->scale);
+  tb_body_id followed = tb_scene_find_body(world, scene->follow_tag);
+  if (scene->follow_tag != NULL && tb_body_id_is_null(followed))
+    fprintf(stderr, "tumble-demo: %s: no body tagged '%s' to follow; the camera fits the bounds\n", scene->name,
+            scene->follow_tag);
+
+  bool sequence = o->frames > 1;
+  char dir[PATH_MAX], path[PATH_MAX + 32];
+  snprintf(dir, sizeof dir, "%s/%s", o->out, scene->name);
+  if (sequence && !make_dirs(dir)) {
+    fprintf(stderr, "tumble-demo: cannot create %s: %s\n", dir, strerror(errno));
+    tb_destroy_world(world);
+    return false;
+  }
+  bool ok = true;
+  int step = 0;
+  tb_aabb seen = {{1.0f, 1.0f}, {-1.0f, -1.0f}}; /* nothing seen yet */
+  for (int frame = 0; frame < o->frames && ok; ++frame) {
+    double step_ms = 0.0;
+    for (int k = 0; k < o->every; ++k, ++step) {
+      if (scene->update != NULL) scene->update(world, step);
+      if (tb_world_step(world, 1.0f / STEP_HZ, SUBSTEPS) != TB_OK) {
+        fprintf(stderr, "tumble-demo: %s, step %d: %s\n", scene->name, step, tb_last_error());
+        ok = false;
+        break;
+      }
+      step_ms += tb_world_get_profile(world).step;
+    }
+    if (!ok) break;
+    if (sequence) {
+      snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
+    } else {
+      snprintf(path, sizeof path, "%s.png", dir);
+    }
+    ok = render_frame(r, o, scene, world, followed, &seen, step_ms / o->every, path);
+    if (ok && !sequence) printf("%s\n", path);
+  }
+  tb_destroy_world(world);
+  if (!ok || !sequence) return ok;
+  printf("%s/frame_00000.png ... frame_%05d.png (%d frames)\n", dir, o->frames - 1, o->frames);
+  if (!o->video) return true;
+  if (!tbr_ffmpeg_available()) {
+    fprintf(stderr,
+            "tumble-demo: ffmpeg is not on PATH: no MP4 or GIF, the PNG frames are in %s "
+            "(install it with tools/deps.sh video)\n",
+            dir);
+    return true;
+  }
+  char pattern[PATH_MAX + 32], error[512];
+  snprintf(pattern, sizeof pattern, "%s/frame_%%05d.png", dir);
+  double fps = (double)STEP_HZ / o->every;
+  const char* kinds[2] = {"mp4", "gif"};
+  for (int k = 0; k < 2; ++k) {
+    snprintf(path, sizeof path, "%s.%s", dir, kinds[k]);
+    int gif_width = o->width < 640 ? o->width : 640;
+    if (!tbr_encode_video(pattern, fps, path, gif_width, error, sizeof error)) {
+      fprintf(stderr, "tumble-demo: %s\n", error);
+      return false;
+    }
+    printf("%s\n", path);
+  }
+  return true;
+}
+
+int main(int argc, char** argv) {
+  options o = {NULL, 1, 0, 1280, 720, 1.0f, "out", false, true};
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    const char* v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+      usage(stdout);
+      return 0;
+    } else if (strcmp(a, "--list") == 0) {
+      list_scenes();
+      return 0;
+    } else if (strcmp(a, "--scene") == 0) {
+      if (v == NULL) return bad_usage("--scene needs a scene name %s", v);
+      if (tb_scene_find(v) == NULL) return bad_usage("unknown scene '%s' (tumble-demo --list shows them)", v);
+      o.scene = v;
+      ++i;
+    } else if (strcmp(a, "--frames") == 0) {
+      if (!parse_int(v, 1, 100000, &o.frames)) return bad_usage("--frames needs a whole number 1 to 100000, not %s", v);
+      ++i;
+    } else if (strcmp(a, "--every") == 0) {
+      if (!parse_int(v, 1, 100000, &o.every)) return bad_usage("--every needs a whole number 1 to 100000, not %s", v);
+      ++i;
+    } else if (strcmp(a, "--size") == 0) {
+      if (!parse_size(v, &o.width, &o.height))
+        return bad_usage("--size needs WxH with each 16 to 8192 (e.g. 1280x720), not %s", v);
+      ++i;
+    } else if (strcmp(a, "--scale") == 0) {
+      char* end = NULL;
+      float s = v == NULL ? 0.0f : strtof(v, &end);
+      if (v == NULL || *end != '\0' || !(s > 0.0f && s <= 1.0f))
+        return bad_usage("--scale needs a number in (0, 1], not %s", v);
+      o.scale = s;
+      ++i;
+    } else if (strcmp(a, "--out") == 0) {
+      if (v == NULL || *v == '\0') return bad_usage("--out needs a folder %s", v);
+      o.out = v;
+      ++i;
+    } else if (strcmp(a, "--video") == 0) {
+      o.video = true;
+    } else if (strcmp(a, "--no-overlay") == 0) {
+      o.overlay = false;
+    } else {
+      return bad_usage("unknown option '%s'", a);
+    }
+  }
+  if (o.every == 0) o.every = o.frames > 1 ? 1 : 90;
+  if (o.video && o.frames < 2) return bad_usage("%s", "--video needs --frames 2 or more");
+  if (!make_dirs(o.out)) {
+    fprintf(stderr, "tumble-demo: cannot create %s: %s\n", o.out, strerror(errno));
+    return 1;
+  }
+  char error[512];
+  renderer r = {tbr_offscreen_create(o.width, o.height, error, sizeof error), tbr_gl_create()};
+  if (r.target == NULL || r.gl == NULL) {
+    fprintf(stderr, "tumble-demo: %s\n", r.target == NULL ? error : "out of memory");
+    tbr_offscreen_destroy(r.target);
+    tbr_gl_destroy(r.gl);
+    return 1;
+  }
+  int count = 0;
+  const tb_scene* scenes = tb_scenes(&count);
+  int failed = 0;
+  for (int i = 0; i < count; ++i) {
+    if (o.scene != NULL && strcmp(o.scene, scenes[i].name) != 0) continue;
+    failed += !run_scene(&r, &o, &scenes[i]);
+  }
+  tbr_gl_destroy(r.gl);
+  tbr_offscreen_destroy(r.target);
+  return failed == 0 ? 0 : 1;
+}
