@@ -52,6 +52,9 @@ CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 EXTRA_TEST_BIN :=
 EXTRA_TEST_DEPS :=
 EXTRA_SAN_BIN :=
+# The scene catalogue (demos/scenes: scenes.c lists the scenes, gallery.c
+# builds the demo ones), linked whole by the demos, the bench and the tests.
+SCENE_CATALOGUE_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard demos/scenes/*.c))
 include $(sort $(wildcard mk/*.mk))
 
 all: lib

@@ -8,7 +8,7 @@ DEMO_LIBS = $(shell pkg-config --libs $(DEMO_PKGS) 2>/dev/null || echo -lOSMesa 
 DEMO_BIN := $(BUILD)/tumble-demo
 RENDER_SRC := $(wildcard demos/render/*.c)
 RENDER_OBJ := $(RENDER_SRC:%.c=$(BUILD)/obj/%.o)
-SCENES_OBJ = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard demos/scenes/*.c))
+
 # Mesa would otherwise write shader caches under $HOME on every run.
 DEMO_ENV := MESA_SHADER_CACHE_DISABLE=true
 
@@ -20,7 +20,7 @@ $(BUILD)/obj/demos/tumble_demo.o: demos/tumble_demo.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) $(DEMO_CFLAGS) -Idemos -c $< -o $@
 
-$(DEMO_BIN): $(BUILD)/obj/demos/tumble_demo.o $(RENDER_OBJ) $(SCENES_OBJ) $(LIB_A)
+$(DEMO_BIN): $(BUILD)/obj/demos/tumble_demo.o $(RENDER_OBJ) $(SCENE_CATALOGUE_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(DEMO_LIBS) $(LDLIBS_ALL)
 
@@ -53,7 +53,7 @@ $(BUILD)/obj/tests/render/%.o: tests/render/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) $(CHECK_CFLAGS) $(DEMO_CFLAGS) -Idemos -c $< -o $@
 
-$(RENDER_TEST): $(BUILD)/obj/tests/render/test_render.o $(RENDER_OBJ) $(SCENES_OBJ) $(TEST_UTIL_OBJ) $(LIB_A)
+$(RENDER_TEST): $(BUILD)/obj/tests/render/test_render.o $(RENDER_OBJ) $(SCENE_CATALOGUE_OBJ) $(TEST_UTIL_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(CHECK_LIBS) $(DEMO_LIBS) $(LDLIBS_ALL)
 

@@ -14,7 +14,9 @@
  * the scene's default steps (or --steps). Only tb_world_step is timed, each
  * step on its own with clock_gettime(CLOCK_MONOTONIC). A run's figure is its
  * mean ms per step; the row gives the median and the minimum over the runs and
- * the worst single step of all runs. After the last run: bodies (static ones
+ * the worst single step of all runs; tumble's per-stage profile
+ * (tb_world_get_profile) averaged over the last run's steps is printed and,
+ * with --profile-csv, appended to that file. After the last run: bodies (static ones
  * included), awake bodies, touching contacts (manifolds with points,
  * speculative ones included), joints, peak RSS of the process and its growth
  * since before the first world ("+MB"), an FNV-1a hash of every body's
@@ -50,6 +52,7 @@ typedef struct options {
   float scale;
   bool quick, no_sleep;
   const char* csv;
+  const char* profile_csv;
 } options;
 
 typedef struct run_result {
@@ -57,7 +60,24 @@ typedef struct run_result {
   uint64_t hash;
 } run_result;
 
+/* tb_world_get_profile summed over the timed steps of a run. */
+typedef struct profile_sum {
+  double step, broad_phase, narrow_phase, solver, continuous, islands;
+  double awake_bodies, awake_contacts, awake_joints, pairs, new_pairs, swept;
+  int steps;
+} profile_sum;
+
+static void profile_add(profile_sum* p, tb_profile q) {
+  p->step += q.step, p->broad_phase += q.broad_phase, p->narrow_phase += q.narrow_phase;
+  p->solver += q.solver, p->continuous += q.continuous, p->islands += q.islands;
+  p->awake_bodies += q.awake_body_count, p->awake_contacts += q.awake_contact_count;
+  p->awake_joints += q.awake_joint_count, p->pairs += q.pair_count, p->new_pairs += q.new_pair_count;
+  p->swept += q.continuous_count;
+  p->steps += 1;
+}
+
 typedef struct scene_result {
+  profile_sum profile;
   tb_counts counts;
   int outside;
   double mass;
@@ -105,6 +125,7 @@ static run_result run_once(const tb_scene* s, const options* o, int steps, scene
   tb_body_id top = tb_scene_find_body(world, "top");
   tb_vec2 top0 = tb_body_id_is_null(top) ? (tb_vec2){0.0f, 0.0f} : tb_body_get_position(top);
   double total = 0.0, worst = 0.0;
+  profile_sum profile = {0};
   for (int k = 0; k < steps; ++k) {
     if (s->update != NULL) s->update(world, k);
     double t0 = now_ms();
@@ -116,9 +137,11 @@ static run_result run_once(const tb_scene* s, const options* o, int steps, scene
     }
     total += t1 - t0;
     if (t1 - t0 > worst) worst = t1 - t0;
+    profile_add(&profile, tb_world_get_profile(world));
   }
   if (out != NULL) {
     memset(out, 0, sizeof *out);
+    out->profile = profile;
     out->counts = tb_world_get_counts(world);
     out->outside = tb_scene_count_outside(world, s->bounds);
     out->mass = dynamic_mass(world);
@@ -165,6 +188,34 @@ static void bench_scene(const tb_scene* s, const options* o) {
     printf("%-12s %-14s top box: dx %+.3f m, dy %+.3f m -> %s\n", engine, s->name, (double)r.top_dx, (double)r.top_dy,
            standing ? "standing" : "FALLEN");
   }
+  if (r.profile.steps > 0) {
+    const profile_sum* p = &r.profile;
+    double n = p->steps;
+    printf(
+        "%-12s %-14s profile ms/step: step %.3f = broad %.3f + narrow %.3f + solver %.3f + continuous %.3f + "
+        "islands %.3f; mean awake bodies %.0f, contacts %.0f, joints %.0f, pairs %.0f, new pairs %.1f, swept %.1f\n",
+        engine, s->name, p->step / n, p->broad_phase / n, p->narrow_phase / n, p->solver / n, p->continuous / n,
+        p->islands / n, p->awake_bodies / n, p->awake_contacts / n, p->awake_joints / n, p->pairs / n, p->new_pairs / n,
+        p->swept / n);
+    if (o->profile_csv != NULL) {
+      FILE* f = fopen(o->profile_csv, "a");
+      if (f == NULL) {
+        perror(o->profile_csv);
+      } else {
+        fseek(f, 0, SEEK_END);
+        if (ftell(f) == 0) {
+          fprintf(f,
+                  "engine,scene,scale,steps,step,broad_phase,narrow_phase,solver,continuous,islands,awake_bodies,"
+                  "awake_contacts,awake_joints,pairs,new_pairs,swept\n");
+        }
+        fprintf(f, "%s,%s,%.3f,%d,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.1f,%.1f,%.1f,%.1f,%.2f,%.2f\n", engine, s->name,
+                (double)o->scale, p->steps, p->step / n, p->broad_phase / n, p->narrow_phase / n, p->solver / n,
+                p->continuous / n, p->islands / n, p->awake_bodies / n, p->awake_contacts / n, p->awake_joints / n,
+                p->pairs / n, p->new_pairs / n, p->swept / n);
+        fclose(f);
+      }
+    }
+  }
   fflush(stdout);
   if (o->csv != NULL) {
     FILE* f = fopen(o->csv, "a");
@@ -194,12 +245,14 @@ static void bench_scene(const tb_scene* s, const options* o) {
 }
 
 static void usage(const char* argv0) {
-  fprintf(stderr, "usage: %s [--scene NAME] [--runs N] [--steps N] [--scale S] [--quick] [--no-sleep] [--csv FILE]\n",
+  fprintf(stderr,
+          "usage: %s [--scene NAME] [--runs N] [--steps N] [--scale S] [--quick] [--no-sleep] [--csv FILE]\n"
+          "       [--profile-csv FILE]\n",
           argv0);
 }
 
 int main(int argc, char** argv) {
-  options o = {NULL, 3, 0, 1.0f, false, false, NULL};
+  options o = {NULL, 3, 0, 1.0f, false, false, NULL, NULL};
   bool runs_set = false, scale_set = false;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
@@ -216,6 +269,8 @@ int main(int argc, char** argv) {
       scale_set = true;
     } else if (strcmp(a, "--csv") == 0 && has_value) {
       o.csv = argv[++i];
+    } else if (strcmp(a, "--profile-csv") == 0 && has_value) {
+      o.profile_csv = argv[++i];
     } else if (strcmp(a, "--quick") == 0) {
       o.quick = true;
     } else if (strcmp(a, "--no-sleep") == 0) {
