@@ -180,7 +180,7 @@ typedef float tb_mix_fn(float a, float b, void* context);
 
 typedef struct tb_world_def {
   tb_vec2 gravity;                /* m/s^2, default (0, -10) */
-  tb_integrator integrator;       /* default semi-implicit Euler */
+  tb_integrator integrator;       /* default midpoint: exact under constant forces */
   tb_force_field_fn* force_field; /* optional, default NULL */
   void* force_field_context;
   /* Contact hit events are reported above this approach speed (m/s, default 1). */

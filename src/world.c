@@ -15,7 +15,7 @@ static uint16_t world_generations[TB_MAX_WORLDS];
 
 tb_world_def tb_default_world_def(void) {
   return (tb_world_def){.gravity = {0.0f, -10.0f},
-                        .integrator = TB_INTEGRATOR_SEMI_IMPLICIT_EULER,
+                        .integrator = TB_INTEGRATOR_MIDPOINT,
                         .hit_event_threshold = 1.0f,
                         .contact_hertz = 30.0f,
                         .contact_damping_ratio = 10.0f,

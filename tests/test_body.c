@@ -120,7 +120,7 @@ START_TEST(shapes_and_user_data) {
   bd.user_data = &tag_b;
   tb_body_id b = tb_create_body(w, &bd);
   ck_assert_ptr_eq(tb_body_get_user_data(b), &tag_b);
-  ck_assert_int_eq(tb_world_get_integrator(w), TB_INTEGRATOR_SEMI_IMPLICIT_EULER);
+  ck_assert_int_eq(tb_world_get_integrator(w), TB_INTEGRATOR_MIDPOINT);
   tb_shape_def sd = tb_default_shape_def();
   sd.user_data = &tag_s;
   sd.friction = 0.25f;

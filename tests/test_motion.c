@@ -21,6 +21,7 @@ static tb_body_id dynamic_disc(tb_world_id w, tb_vec2 pos, tb_vec2 vel, float om
  * g = -8, v0 = (2, 16)) every float operation is exact, so equality is exact. */
 START_TEST(discrete_projectile_is_exact) {
   tb_world_id w = tbt_world(0.0f, -8.0f);
+  tb_world_set_integrator(w, TB_INTEGRATOR_SEMI_IMPLICIT_EULER);
   tb_body_id b = dynamic_disc(w, (tb_vec2){1.0f, 2.0f}, (tb_vec2){2.0f, 16.0f}, 0.0f);
   const int substeps = 4;
   const double h = 1.0 / 256.0;
@@ -55,6 +56,7 @@ START_TEST(runge_kutta_projectile_matches_parabola) {
   }
   /* and the semi-implicit error is the predicted g h t / 2 */
   tb_world_id w = tbt_world(0.0f, -10.0f);
+  tb_world_set_integrator(w, TB_INTEGRATOR_SEMI_IMPLICIT_EULER);
   tb_body_id b = dynamic_disc(w, (tb_vec2){0.0f, 0.0f}, (tb_vec2){3.0f, 20.0f}, 0.0f);
   for (int i = 0; i < 60; ++i) tb_world_step(w, 1.0f / 60.0f, 4);
   double t = 1.0, h = 1.0 / 240.0;
@@ -160,6 +162,7 @@ END_TEST
  * one rounding per substep, so 480 * 6e-8 = 2.9e-5 at worst. */
 START_TEST(damping_is_discrete_geometric) {
   tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_world_set_integrator(w, TB_INTEGRATOR_SEMI_IMPLICIT_EULER);
   tb_body_id b = dynamic_disc(w, (tb_vec2){0, 0}, (tb_vec2){5.0f, 0.0f}, 2.0f);
   tb_body_set_linear_damping(b, 0.5f);
   tb_body_set_angular_damping(b, 2.0f);

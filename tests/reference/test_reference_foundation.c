@@ -82,6 +82,7 @@ typedef struct pair {
 static pair make_pair(tb_vec2 gravity, const scene_body* s, float radius, float hx, float hy, float density) {
   pair p;
   p.tw = tbt_world(gravity.x, gravity.y);
+  tb_world_set_integrator(p.tw, TB_INTEGRATOR_SEMI_IMPLICIT_EULER); /* Box2D's scheme */
   tb_body_def bd = tumble_def(s);
   p.tb = tb_create_body(p.tw, &bd);
   ck_assert_msg(!tb_body_id_is_null(p.tb), "tb_create_body: %s", tb_last_error());
@@ -340,6 +341,7 @@ START_TEST(test_polygon_mass_matches_box2d) {
   unsigned seed = 0x9E3779B9u;
   poly_stats st = {0};
   tb_world_id world = tbt_world(0.0f, 0.0f);
+  tb_world_set_integrator(world, TB_INTEGRATOR_SEMI_IMPLICIT_EULER); /* Box2D's scheme */
   tb_body_def bd = tb_default_body_def();
   tb_body_id body = tb_create_body(world, &bd);
   ck_assert(!tb_body_id_is_null(body));
