@@ -235,6 +235,9 @@ tb_vec2 tb_world_get_gravity(tb_world_id world);
 tb_result tb_world_set_integrator(tb_world_id world, tb_integrator integrator);
 tb_integrator tb_world_get_integrator(tb_world_id world);
 tb_result tb_world_set_force_field(tb_world_id world, tb_force_field_fn* fn, void* context);
+/* Replaces the pre-solve callback of the world definition (NULL removes it);
+ * not from inside the step. */
+tb_result tb_world_set_pre_solve(tb_world_id world, tb_pre_solve_fn* fn, void* context);
 /* Simulated time: the sum of all time steps taken (seconds). */
 double tb_world_get_time(tb_world_id world);
 /* Switches and tuning of the world definition, changeable between steps (same

@@ -326,6 +326,14 @@ tb_result tb_world_set_force_field(tb_world_id id, tb_force_field_fn* fn, void* 
   return TB_OK;
 }
 
+tb_result tb_world_set_pre_solve(tb_world_id id, tb_pre_solve_fn* fn, void* context) {
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_set_pre_solve");
+  if (w == NULL) return tb_last_result();
+  w->pre_solve = fn;
+  w->pre_solve_context = context;
+  return TB_OK;
+}
+
 tb_result tb_world_enable_sleeping(tb_world_id id, bool enable) {
   tb_world* w = tb_world_get_unlocked(id, "tb_world_enable_sleeping");
   if (w == NULL) return tb_last_result();

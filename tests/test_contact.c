@@ -305,6 +305,36 @@ START_TEST(pre_solve_and_mixing) {
 }
 END_TEST
 
+/* The callback can be set, swapped and removed after creation: with it the
+ * lower ball's contact is disabled, without it the same contact pushes. */
+START_TEST(pre_solve_set_later) {
+  int calls = 0;
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_shape_def sd = tb_default_shape_def();
+  sd.enable_pre_solve_events = true;
+  tb_polygon box;
+  tb_make_box(2.0f, 0.1f, &box);
+  tb_create_polygon_shape(make_body(w, TB_STATIC_BODY, 0, 0), &sd, &box);
+  tb_body_id below = make_body(w, TB_DYNAMIC_BODY, 1.0f, -0.3f);
+  add_circle(below, &sd, 0.25f);
+  ck_assert_int_eq(tb_world_set_pre_solve(w, one_way, &calls), TB_OK);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_ge(calls, 1);
+  tb_contact_data cd;
+  ck_assert_int_eq(tb_body_get_contact_data(below, &cd, 1), 1);
+  ck_assert(cd.touching && !cd.enabled);
+  ck_assert_int_eq(tb_world_set_pre_solve(w, NULL, NULL), TB_OK);
+  int before = calls;
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_eq(calls, before);
+  ck_assert_int_eq(tb_body_get_contact_data(below, &cd, 1), 1);
+  ck_assert(cd.touching && cd.enabled);
+  tb_destroy_world(w);
+  ck_assert_int_eq(tb_world_set_pre_solve(w, one_way, &calls), TB_ERR_STALE_HANDLE);
+}
+END_TEST
+
 START_TEST(default_mixing_is_geometric_mean) {
   tb_world_id w = tbt_world(0.0f, 0.0f);
   tb_shape_def sd = tb_default_shape_def();
@@ -377,6 +407,7 @@ static Suite* contact_suite(void) {
   tcase_add_test(tc, hit_events);
   tcase_add_test(tc, sensor_events);
   tcase_add_test(tc, pre_solve_and_mixing);
+  tcase_add_test(tc, pre_solve_set_later);
   tcase_add_test(tc, default_mixing_is_geometric_mean);
   tcase_add_test(tc, touching_pairs_match_brute_force);
   suite_add_tcase(s, tc);
