@@ -492,6 +492,7 @@ void tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
 
 /* Newton's restitution on the points that approached faster than the
  * threshold and pushed during the step: v_n' = -e v_n(before). */
+#define TB_RESTITUTION_PASSES 8
 static void apply_restitution(tb_contact_constraint* cc, tb_solver_body* states, float threshold) {
   tb_solver_body* sa = &states[cc->a];
   tb_solver_body* sb = &states[cc->b];
@@ -535,8 +536,13 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
       cs[k].rolling_impulse = wide[b].rolling_impulse[lane];
     }
   }
-  for (int k = 0; k < w->step_contact_count; ++k)
-    if (cs[k].restitution != 0.0f) apply_restitution(&cs[k], ctx->states, ctx->restitution_threshold);
+  /* Restitution is iterated like the velocity solve: a ball that strikes two
+   * others at once (or a row of touching balls) only bounces off all of them
+   * with e when each contact sees the others' impulses; one pass would leave
+   * the first contact's bounce undone by the second and lose energy. */
+  for (int pass = 0; pass < TB_RESTITUTION_PASSES; ++pass)
+    for (int k = 0; k < w->step_contact_count; ++k)
+      if (cs[k].restitution != 0.0f) apply_restitution(&cs[k], ctx->states, ctx->restitution_threshold);
   for (int k = 0; k < w->step_contact_count; ++k) {
     const tb_contact_constraint* cc = &cs[k];
     tb_contact* c = (tb_contact*)tb_pool_at(&w->contacts, cc->contact);

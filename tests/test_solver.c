@@ -626,6 +626,37 @@ START_TEST(more_contacts_than_colours) {
 }
 END_TEST
 
+/* A ball (e = 1, frictionless, no gravity) strikes two equal balls placed
+ * symmetrically at +-30 deg, all at once. Newton's rule at both contacts and
+ * momentum give, for incoming speed v: the striker goes on at
+ * u = v (1 - 2 cos^2 30)/(1 + 2 cos^2 30) = -0.2 v and each struck ball leaves
+ * along its normal at w = (u + v) cos 30 = 0.6928 v: energy is conserved
+ * (0.04 + 2 * 0.48 = 1). Solving the two contacts one after the other in a
+ * single restitution pass gives the first more than its share; the passes
+ * are iterated, and 8 of them converge to 1e-3 of v. */
+START_TEST(simultaneous_elastic_strike) {
+  tb_world_id w = make_world((tb_vec2){0.0f, 0.0f}, false);
+  tb_world_set_restitution_threshold(w, 0.0f);
+  tb_shape_def sd = material(1.0f, 0.0f, 1.0f);
+  const double v = 2.0, c30 = cos(PI / 6.0), s30 = 0.5, d = 1.001;
+  tb_body_id a = circle_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 0.0f}, 0.5f, &sd);
+  tb_body_id b = circle_body(w, TB_DYNAMIC_BODY, (tb_vec2){(float)(d * c30), (float)(d * s30)}, 0.5f, &sd);
+  tb_body_id c = circle_body(w, TB_DYNAMIC_BODY, (tb_vec2){(float)(d * c30), (float)(-d * s30)}, 0.5f, &sd);
+  tb_body_set_linear_velocity(a, (tb_vec2){(float)v, 0.0f});
+  for (int i = 0; i < 10; ++i) step(w, 1);
+  double u = tb_body_get_linear_velocity(a).x;
+  tb_vec2 vb = tb_body_get_linear_velocity(b), vc = tb_body_get_linear_velocity(c);
+  fprintf(stderr, "simultaneous strike: striker %.5f (%.5f), struck (%.5f, %.5f) and (%.5f, %.5f) (|w| %.5f)\n", u,
+          -0.2 * v, vb.x, vb.y, vc.x, vc.y, 0.69282 * v);
+  ck_assert_near(u, -0.2 * v, 1e-3 * v);
+  ck_assert_near(hypot(vb.x, vb.y), 0.69282 * v, 1e-3 * v);
+  ck_assert_near(hypot(vc.x, vc.y), 0.69282 * v, 1e-3 * v);
+  double e = u * u + vb.x * vb.x + vb.y * vb.y + vc.x * vc.x + vc.y * vc.y;
+  ck_assert_rel(e, v * v, 2e-3);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* A 20 x 1 m plank of 400 kg (density 20) lies on two 1 m boxes of 1 kg at its
  * ends: a 400:1 mass ratio. Sleep off. The small boxes must not be crushed
  * into the ground and the plank must keep its height. Rigid contacts would
@@ -1050,6 +1081,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, stack_of_30_stands);
   tcase_add_test(tc, mass_ratio_400_to_1);
   tcase_add_test(tc, more_contacts_than_colours);
+  tcase_add_test(tc, simultaneous_elastic_strike);
   suite_add_tcase(s, tc);
   return s;
 }
