@@ -1,0 +1,129 @@
+/* The stress suite (issue 7): scenes that push the engine to its limits, each
+ * with a numeric pass criterion. Every test runs at the default settings
+ * (tb_default_world_def(), 60 Hz, 4 substeps) unless its comment says which
+ * switch it changes and why. `make stress` runs them all and writes
+ * results/STRESS.md; `make test` runs the fast subset (stress_fast).
+ *
+ * A test fills a stress_result: the measured figure as text, pass or fail,
+ * and the world hash at a fixed step for the determinism checks. */
+#ifndef TB_STRESS_H
+#define TB_STRESS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "tumble.h"
+
+#define STRESS_DT (1.0f / 60.0f)
+#define STRESS_SUBSTEPS 4
+#define STRESS_G 10.0 /* |default gravity| (m/s^2) */
+
+typedef struct stress_result {
+  bool pass;
+  char figure[320]; /* the measured figures, as the report prints them */
+} stress_result;
+
+typedef struct stress_test {
+  const char* name;
+  const char* criterion; /* one line for the report */
+  bool fast;             /* part of the `make test` subset */
+  void (*run)(stress_result* out);
+} stress_test;
+
+/* Appends printf-style text to out->figure. */
+void stress_note(stress_result* out, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* ---- worlds and bodies -------------------------------------------------- */
+
+/* A world from tb_default_world_def(); sleep switched as asked. */
+tb_world_id stress_world(bool enable_sleep);
+/* One step at 60 Hz, 4 substeps; false (and a message on stderr) on error. */
+bool stress_step(tb_world_id w);
+/* A static ground box whose top surface is y = top, spanning x0 +- half_width. */
+tb_body_id stress_ground(tb_world_id w, float x0, float top, float half_width);
+/* A dynamic box body (density 1, friction 0.6 unless sd says otherwise). */
+tb_body_id stress_box(tb_world_id w, tb_vec2 p, float angle, float hx, float hy, const tb_shape_def* sd);
+tb_body_id stress_circle(tb_world_id w, tb_vec2 p, float r, const tb_shape_def* sd);
+/* A column of `count` boxes of half-size h on the surface y = y0 at x = x0;
+ * returns the top box. */
+tb_body_id stress_column(tb_world_id w, float x0, float y0, int count, float h);
+/* A pyramid: rows of base, base - 1, ... boxes of half-size h, touching, each
+ * row centred on the one below, standing on y = y0 around x0; returns the top. */
+tb_body_id stress_pyramid(tb_world_id w, float x0, float y0, int base, float h);
+
+/* ---- measurements ------------------------------------------------------- */
+
+/* Every body of the world that has a shape, in creation order (malloc'd;
+ * free it). */
+tb_body_id* stress_bodies(tb_world_id w, int* count);
+/* Kinetic + gravitational potential energy (J, y = 0 as zero) of the dynamic
+ * bodies in the list, in double. */
+double stress_energy(const tb_body_id* bodies, int count);
+/* Whether every body's placement and velocity are finite. */
+bool stress_all_finite(const tb_body_id* bodies, int count);
+/* The largest linear speed of the dynamic bodies in the list (m/s). */
+double stress_peak_speed(const tb_body_id* bodies, int count);
+/* The deepest overlap (m, >= 0) over the touching contacts of these bodies. */
+double stress_deepest_overlap(const tb_body_id* bodies, int count);
+/* The spacing of floats at |x| (one ULP), in metres. */
+double stress_ulp(float x);
+
+/* ---- memory ------------------------------------------------------------- */
+
+/* Heap bytes currently allocated through malloc/calloc/realloc by the engine
+ * and this program (counted by heap_count.c through the linker's --wrap), and
+ * the number of allocation calls so far. */
+long long stress_heap_live_bytes(void);
+long long stress_heap_alloc_calls(void);
+/* Resident set size of the process (bytes), from /proc/self/statm; -1 if
+ * unavailable. */
+long long stress_rss_bytes(void);
+
+/* ---- the tests, one group per file -------------------------------------- */
+
+void stress_stack_15(stress_result* out);
+void stress_stack_30(stress_result* out);
+void stress_pyramid_20(stress_result* out);
+void stress_pyramid_100(stress_result* out);
+void stress_card_house(stress_result* out);
+void stress_arch(stress_result* out);
+
+void stress_mass_ratio_100(stress_result* out);
+void stress_mass_ratio_400(stress_result* out);
+void stress_mass_ratio_1000(stress_result* out);
+void stress_ball_and_chain(stress_result* out);
+
+void stress_overlap_boxes(stress_result* out);
+void stress_overlap_circles(stress_result* out);
+
+void stress_bullets(stress_result* out);
+void stress_spinner(stress_result* out);
+
+void stress_scale_offset(stress_result* out);
+void stress_tiny_boxes(stress_result* out);
+void stress_large_boxes(stress_result* out);
+
+void stress_one_hour(stress_result* out);
+void stress_churn(stress_result* out);
+
+/* ---- scene builders shared with the determinism check ------------------- */
+
+/* Each builds one stress scene into a fresh world (gravity default). */
+void stress_build_stack(tb_world_id w, int count);
+void stress_build_pyramid(tb_world_id w, float x0, float y0, int base, float h);
+void stress_build_card_house(tb_world_id w);
+void stress_build_arch(tb_world_id w);
+void stress_build_mass_ratio(tb_world_id w, float ratio);
+void stress_build_ball_and_chain(tb_world_id w);
+void stress_build_overlap_boxes(tb_world_id w);
+void stress_build_overlap_circles(tb_world_id w);
+void stress_build_bullets(tb_world_id w, int count, unsigned seed);
+
+/* Hashes of the stress scenes after a fixed number of steps, one line per
+ * scene ("name hash"), written to `out`; run twice in-process, and false when
+ * the two runs differ. */
+bool stress_print_hashes(FILE* out);
+
+#endif

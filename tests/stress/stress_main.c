@@ -1,0 +1,29 @@
+/* The stress suite's command line (`make stress`):
+ *   stress [--fast] [--only NAME] [--report FILE] [--o0-hashes FILE]
+ *   stress --hashes     prints each stress scene's hash (for the -O0/-O2 check)
+ * Exits non-zero when a test fails. */
+#include <stdio.h>
+#include <string.h>
+
+#include "stress.h"
+#include "stress_runner.h"
+
+int main(int argc, char** argv) {
+  stress_options options = {0};
+  for (int i = 1; i < argc; ++i) {
+    if (strcmp(argv[i], "--hashes") == 0) return stress_print_hashes(stdout) ? 0 : 1;
+    if (strcmp(argv[i], "--fast") == 0) {
+      options.fast_only = true;
+    } else if (strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
+      options.only = argv[++i];
+    } else if (strcmp(argv[i], "--report") == 0 && i + 1 < argc) {
+      options.report = argv[++i];
+    } else if (strcmp(argv[i], "--o0-hashes") == 0 && i + 1 < argc) {
+      options.o0_hashes = argv[++i];
+    } else {
+      fprintf(stderr, "usage: %s [--fast] [--only NAME] [--report FILE] [--o0-hashes FILE] | --hashes\n", argv[0]);
+      return 2;
+    }
+  }
+  return stress_run(&options);
+}

@@ -1,0 +1,151 @@
+/* The table of stress tests, the runner and the Markdown report. */
+#define _POSIX_C_SOURCE 200809L
+#include "stress_runner.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "stress.h"
+
+static const stress_test k_tests[] = {
+    {"stack_15", "15 boxes of 1 m, 30 s, sleep off: top within 5 cm of its start sideways and vertically", false,
+     stress_stack_15},
+    {"stack_30", "30 boxes of 1 m, 30 s, sleep off: top within 5 cm of its start sideways and vertically", false,
+     stress_stack_30},
+    {"pyramid_20", "base 20 (210 boxes of 1 m), 30 s, sleep off: top within 5 cm of its start", true,
+     stress_pyramid_20},
+    {"pyramid_100", "base 100 (5,050 boxes of 1 m), 30 s, sleep off: top within 5 cm of its start", false,
+     stress_pyramid_100},
+    {"card_house", "5 levels, 40 cards 2 mm x 40 cm, 30 s, sleep off: top card within 1 cm of its start", false,
+     stress_card_house},
+    {"arch", "semicircular arch of 11 voussoirs, friction only, 30 s, sleep off: keystone within 5 cm", true,
+     stress_arch},
+    {"mass_ratio_100", "20 m plank on two 1 kg boxes, 100:1, 30 s: plank sinks < 3 cm, supports < 5 cm, slides < 3 cm",
+     true, stress_mass_ratio_100},
+    {"mass_ratio_400", "same, 400:1", false, stress_mass_ratio_400},
+    {"mass_ratio_1000", "same, 1000:1", false, stress_mass_ratio_1000},
+    {"ball_and_chain", "1 m ball of 670 link masses on 40 capsule links, swinging 30 s: joint gap < link radius 5 cm",
+     false, stress_ball_and_chain},
+    {"overlap_boxes", "20 boxes overlapping 25 %: peak speed <= push cap + g d / cap; overlap < 1 cm at 3 s", false,
+     stress_overlap_boxes},
+    {"overlap_circles",
+     "256 circles overlapping 25 % in a U: peak speed <= push cap + g d / cap; overlap < 1 cm at 3 s", false,
+     stress_overlap_circles},
+    {"bullets", "1,000 bullets at 500 m/s in a room of 1 cm walls, 2 s: zero tunnelled", true, stress_bullets},
+    {"spinner", "plank at 50 rad/s: free |dw|/w < 1e-4 over 10 s; dropped: energy never above start + 1 %", true,
+     stress_spinner},
+    {"scale_offset",
+     "pyramid of base 20 at 8 km and 65 km, 10 s, sleep off: top drift within 1 ULP of the origin run's", false,
+     stress_scale_offset},
+    {"tiny_boxes", "pyramid of base 10 of 2.5 cm boxes, 10 s, sleep off: top drift < 5 % of a box", false,
+     stress_tiny_boxes},
+    {"large_boxes", "pyramid of base 10 of 50 m boxes, 10 s, sleep off: top drift < 5 % of a box", true,
+     stress_large_boxes},
+    {"one_hour",
+     "216,000 steps of 120 bodies in a turning drum, sleep off: finite, none lost, energy bounded, heap flat", false,
+     stress_one_hour},
+    {"churn", "100,000 steps creating/destroying bodies and joints: no stale handle resolves, no reissue, no leak",
+     true, stress_churn},
+};
+
+#define TEST_COUNT ((int)(sizeof k_tests / sizeof k_tests[0]))
+
+static double seconds_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Compares this build's scene hashes (two runs in-process) with the -O0
+ * build's output. */
+static void determinism_row(const char* o0_path, stress_result* out) {
+  /* a caller-owned buffer: memory libc allocates would bypass heap_count.c */
+  char mine[4096] = "";
+  FILE* m = fmemopen(mine, sizeof mine, "w");
+  bool same_runs = m != NULL && stress_print_hashes(m);
+  if (m != NULL) fclose(m);
+  FILE* f = fopen(o0_path, "r");
+  char other[4096] = "";
+  size_t n = f != NULL ? fread(other, 1, sizeof other - 1, f) : 0;
+  other[n] = '\0';
+  if (f != NULL) fclose(f);
+  int lines = 0;
+  for (const char* c = mine; *c; ++c) lines += *c == '\n';
+  bool same_builds = strcmp(mine, other) == 0;
+  out->pass = same_runs && same_builds && lines > 0;
+  stress_note(out, "%d scenes: two runs %s; -O0 vs -O2 %s", lines, same_runs ? "equal" : "DIFFER",
+              same_builds ? "equal" : "DIFFER");
+  if (!same_builds) fprintf(stderr, "-O2 hashes:\n%s-O0 hashes:\n%s", mine, other);
+}
+
+/* A table cell: '|' would end the cell, so it is escaped. */
+static void cell(FILE* f, const char* text) {
+  fputs("| ", f);
+  for (const char* c = text; *c; ++c) {
+    if (*c == '|') fputc('\\', f);
+    fputc(*c, f);
+  }
+  fputc(' ', f);
+}
+
+int stress_run(const stress_options* options) {
+  stress_result results[TEST_COUNT + 1];
+  double seconds[TEST_COUNT + 1];
+  bool ran[TEST_COUNT + 1];
+  int failed = 0, count = 0;
+  for (int i = 0; i < TEST_COUNT; ++i) {
+    const stress_test* t = &k_tests[i];
+    ran[i] = !(options->fast_only && !t->fast) && !(options->only != NULL && strcmp(options->only, t->name) != 0);
+    if (!ran[i]) continue;
+    memset(&results[i], 0, sizeof results[i]);
+    double t0 = seconds_now();
+    t->run(&results[i]);
+    seconds[i] = seconds_now() - t0;
+    count += 1;
+    failed += !results[i].pass;
+    printf("%-4s %-22s %6.1f s  %s\n", results[i].pass ? "ok" : "FAIL", t->name, seconds[i], results[i].figure);
+    fflush(stdout);
+  }
+  ran[TEST_COUNT] = options->o0_hashes != NULL;
+  if (ran[TEST_COUNT]) {
+    memset(&results[TEST_COUNT], 0, sizeof results[TEST_COUNT]);
+    double t0 = seconds_now();
+    determinism_row(options->o0_hashes, &results[TEST_COUNT]);
+    seconds[TEST_COUNT] = seconds_now() - t0;
+    count += 1;
+    failed += !results[TEST_COUNT].pass;
+    printf("%-4s %-22s %6.1f s  %s\n", results[TEST_COUNT].pass ? "ok" : "FAIL", "determinism", seconds[TEST_COUNT],
+           results[TEST_COUNT].figure);
+  }
+  printf("stress: %d tests run, %d failed\n", count, failed);
+
+  if (options->report != NULL) {
+    FILE* f = fopen(options->report, "w");
+    if (f == NULL) {
+      fprintf(stderr, "cannot write %s\n", options->report);
+      return 1;
+    }
+    fprintf(f,
+            "# Stress results\n\n"
+            "Written by `make stress` (tests/stress/, issue 7): every test at the default settings "
+            "(`tb_default_world_def()`, 60 Hz, 4 substeps) unless its criterion says otherwise. "
+            "%d tests, %d failed.\n\n"
+            "| test | criterion | measured | result | run time |\n| --- | --- | --- | --- | --- |\n",
+            count, failed);
+    for (int i = 0; i <= TEST_COUNT; ++i) {
+      if (!ran[i]) continue;
+      const char* name = i < TEST_COUNT ? k_tests[i].name : "determinism";
+      const char* criterion = i < TEST_COUNT ? k_tests[i].criterion
+                                             : "hash of each stress scene after a fixed run: equal over two runs "
+                                               "and between the -O0 and -O2 builds";
+      cell(f, name);
+      cell(f, criterion);
+      cell(f, results[i].figure);
+      fprintf(f, "| %s | %.1f s |\n", results[i].pass ? "pass" : "**FAIL**", seconds[i]);
+    }
+    fclose(f);
+  }
+  return failed == 0 ? 0 : 1;
+}
