@@ -631,6 +631,10 @@ int tb_body_get_shapes(tb_body_id id, tb_shape_id* out, int capacity) {
     tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: out is NULL", __func__);
     return 0;
   }
+  if (capacity < 0) {
+    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: capacity = %d is negative", __func__, capacity);
+    return 0;
+  }
   int n = 0;
   for (int s = b->shape_list; s >= 0 && n < capacity; s = tb_shape_at(w, s)->next) out[n++] = tb_make_shape_id(w, s);
   return n;
@@ -650,6 +654,10 @@ int tb_body_get_contact_data(tb_body_id id, tb_contact_data* out, int capacity) 
   GET_BODY(id, 0);
   if (out == NULL && capacity > 0) {
     tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: out is NULL", __func__);
+    return 0;
+  }
+  if (capacity < 0) {
+    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: capacity = %d is negative", __func__, capacity);
     return 0;
   }
   int n = 0;

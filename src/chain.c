@@ -132,6 +132,10 @@ int tb_chain_get_segments(tb_chain_id id, tb_shape_id* out, int capacity) {
     tb_fail(w, TB_ERR_NULL_ARGUMENT, "tb_chain_get_segments: out is NULL");
     return 0;
   }
+  if (capacity < 0) {
+    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_chain_get_segments: capacity = %d is negative", capacity);
+    return 0;
+  }
   int n = 0;
   for (; n < c->count && n < capacity; ++n) out[n] = tb_make_shape_id(w, c->shapes[n]);
   return n;
@@ -151,6 +155,13 @@ void tb_chains_free(tb_world* w) {
 /* ---- manifolds ---------------------------------------------------------- */
 
 static const tb_manifold no_contact = {.point_count = 0};
+
+/* NULL shapes give an empty manifold and an error, as for the other pairs. */
+static bool chain_args_ok(const void* a, const void* b, const char* fn) {
+  if (a != NULL && b != NULL) return true;
+  tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: shape %s is NULL", fn, a == NULL ? "a" : "b");
+  return false;
+}
 
 /* The filter described at the top, in the chain segment's frame. center_b is
  * B's centre (world). */
@@ -180,18 +191,24 @@ static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_ve
 
 tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_transform xfa, const tb_circle* b,
                                                 tb_transform xfb) {
+  if (!chain_args_ok(a, b, "tb_collide_chain_segment_and_circle")) return no_contact;
   tb_manifold m = tb_collide_segment_and_circle(&a->segment, xfa, b, xfb);
+  if (m.point_count == 0) return m; /* also a bad transform, reported by the segment function */
   return one_sided(a, xfa, tb_transform_point(xfb, b->center), m);
 }
 
 tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,
                                                  tb_transform xfb) {
+  if (!chain_args_ok(a, b, "tb_collide_chain_segment_and_capsule")) return no_contact;
   tb_manifold m = tb_collide_segment_and_capsule(&a->segment, xfa, b, xfb);
+  if (m.point_count == 0) return m;
   return one_sided(a, xfa, tb_transform_point(xfb, tb_lerp(b->center1, b->center2, 0.5f)), m);
 }
 
 tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
                                                  tb_transform xfb) {
+  if (!chain_args_ok(a, b, "tb_collide_chain_segment_and_polygon")) return no_contact;
   tb_manifold m = tb_collide_segment_and_polygon(&a->segment, xfa, b, xfb);
+  if (m.point_count == 0) return m;
   return one_sided(a, xfa, tb_transform_point(xfb, b->centroid), m);
 }

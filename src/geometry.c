@@ -11,6 +11,7 @@
 #include <stddef.h>
 
 #include "distance.h"
+#include "error.h"
 #include "math_internal.h"
 
 #define TB_PI 3.14159265358979323846
@@ -36,8 +37,7 @@ static tb_mass_data part_to_mass(part p, tb_vec2 ref) {
 }
 
 /* Disc: m = rho pi r^2, I = m r^2 / 2. */
-tb_mass_data tb_compute_circle_mass(const tb_circle* c, float density) {
-  if (c == NULL) return (tb_mass_data){0};
+static tb_mass_data circle_mass(const tb_circle* c, float density) {
   double r = c->radius, m = density * TB_PI * r * r;
   return (tb_mass_data){(float)m, c->center, (float)(0.5 * m * r * r)};
 }
@@ -46,8 +46,7 @@ tb_mass_data tb_compute_circle_mass(const tb_circle* c, float density) {
  * I = m_rect (L^2 + 4 r^2) / 12, plus two half discs. A half disc of mass m_h has
  * its centroid d = 4r/(3 pi) from its flat side and I = m_h r^2/2 - m_h d^2 about
  * that centroid, which sits L/2 + d from the capsule centre. */
-tb_mass_data tb_compute_capsule_mass(const tb_capsule* c, float density) {
-  if (c == NULL) return (tb_mass_data){0};
+static tb_mass_data capsule_mass(const tb_capsule* c, float density) {
   double r = c->radius;
   double dx = (double)c->center2.x - c->center1.x, dy = (double)c->center2.y - c->center1.y;
   double len = sqrt(dx * dx + dy * dy);
@@ -69,8 +68,7 @@ tb_mass_data tb_compute_capsule_mass(const tb_capsule* c, float density) {
  * sector at each corner (the sectors' angles sum to 2 pi). A sector of angle phi
  * has area phi R^2/2, centroid 4 R sin(phi/2) / (3 phi) from its apex along the
  * bisector, and second moment about the apex area R^2/2. */
-tb_mass_data tb_compute_polygon_mass(const tb_polygon* poly, float density) {
-  if (poly == NULL || poly->count < 3) return (tb_mass_data){0};
+static tb_mass_data polygon_mass(const tb_polygon* poly, float density) {
   int n = poly->count;
   double rx = 0.0, ry = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -123,11 +121,43 @@ tb_mass_data tb_compute_polygon_mass(const tb_polygon* poly, float density) {
   return part_to_mass(total, ref);
 }
 
+/* The public entry points check what they are given (the shapes' own masses
+ * above trust the shape, vetted when it was created). */
+static bool mass_input_ok(const char* fn, const char* name, const void* geom, const char* why, float density) {
+  if (geom == NULL) {
+    tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: %s is NULL", fn, name);
+    return false;
+  }
+  if (why != NULL) {
+    tb_fail(NULL, name[0] == 'p' ? TB_ERR_DEGENERATE_POLYGON : TB_ERR_INVALID_ARGUMENT, "%s: %s", fn, why);
+    return false;
+  }
+  return tb_check_non_negative(NULL, fn, "density", density) == TB_OK;
+}
+
+tb_mass_data tb_compute_circle_mass(const tb_circle* circle, float density) {
+  const char* why = circle != NULL ? tb_check_circle(circle) : NULL;
+  if (!mass_input_ok("tb_compute_circle_mass", "circle", circle, why, density)) return (tb_mass_data){0};
+  return circle_mass(circle, density);
+}
+
+tb_mass_data tb_compute_capsule_mass(const tb_capsule* capsule, float density) {
+  const char* why = capsule != NULL ? tb_check_capsule(capsule) : NULL;
+  if (!mass_input_ok("tb_compute_capsule_mass", "capsule", capsule, why, density)) return (tb_mass_data){0};
+  return capsule_mass(capsule, density);
+}
+
+tb_mass_data tb_compute_polygon_mass(const tb_polygon* polygon, float density) {
+  const char* why = polygon != NULL ? tb_check_polygon(polygon) : NULL;
+  if (!mass_input_ok("tb_compute_polygon_mass", "polygon", polygon, why, density)) return (tb_mass_data){0};
+  return polygon_mass(polygon, density);
+}
+
 tb_mass_data tb_shape_geom_mass(const tb_shape* s) {
   switch (s->type) {
-    case TB_SHAPE_CIRCLE: return tb_compute_circle_mass(&s->geom.circle, s->density);
-    case TB_SHAPE_CAPSULE: return tb_compute_capsule_mass(&s->geom.capsule, s->density);
-    case TB_SHAPE_POLYGON: return tb_compute_polygon_mass(&s->geom.polygon, s->density);
+    case TB_SHAPE_CIRCLE: return circle_mass(&s->geom.circle, s->density);
+    case TB_SHAPE_CAPSULE: return capsule_mass(&s->geom.capsule, s->density);
+    case TB_SHAPE_POLYGON: return polygon_mass(&s->geom.polygon, s->density);
     case TB_SHAPE_SEGMENT: break;
     case TB_SHAPE_CHAIN_SEGMENT: {
       const tb_segment* g = &s->geom.chain_segment.segment;
@@ -217,18 +247,38 @@ const char* tb_check_segment(const tb_segment* s) {
 
 /* A polygon handed to a shape must be one tb_make_polygon could have made:
  * 3..max vertices, finite, counter-clockwise and strictly convex, unit normals. */
+/* Edge directions in the half turn [0, pi) (y > 0, or y == 0 pointing +x). */
+static bool upper_half(tb_vec2 e) { return e.y > 0.0f || (e.y == 0.0f && e.x > 0.0f); }
+
 const char* tb_check_polygon(const tb_polygon* p) {
   if (p->count < 3 || p->count > TB_MAX_POLYGON_VERTICES) return "polygon count must be 3..TB_MAX_POLYGON_VERTICES";
   if (!(p->radius >= 0.0f) || !tb_length_ok(p->radius))
     return "polygon radius must be >= 0, finite and <= TB_MAX_LENGTH";
-  for (int i = 0; i < p->count; ++i) {
+  int n = p->count, wraps = 0;
+  for (int i = 0; i < n; ++i) {
     if (!tb_point_ok(p->vertices[i])) return "polygon vertex is not finite or beyond TB_MAX_LENGTH";
-    tb_vec2 a = p->vertices[i], b = p->vertices[(i + 1) % p->count], c = p->vertices[(i + 2) % p->count];
-    if (tb_cross(tb_sub(b, a), tb_sub(c, b)) <= 0.0f)
-      return "polygon is not convex and counter-clockwise (build it with tb_make_polygon)";
-    tb_vec2 n = p->normals[i];
-    if (!tb_vec_finite(n) || fabsf(tb_length_sq(n) - 1.0f) > 1e-4f)
+  }
+  for (int i = 0; i < n; ++i) {
+    tb_vec2 a = p->vertices[i], b = p->vertices[(i + 1) % n], c = p->vertices[(i + 2) % n];
+    tb_vec2 e = tb_sub(b, a), f = tb_sub(c, b);
+    if (tb_cross(e, f) <= 0.0f) return "polygon is not convex and counter-clockwise (build it with tb_make_polygon)";
+    /* left turns everywhere and one full turn of the edge direction: a star
+     * polygon (pentagram) turns left at every corner but winds twice */
+    if (!upper_half(e) && upper_half(f)) wraps += 1;
+    tb_vec2 nrm = p->normals[i];
+    if (!tb_vec_finite(nrm) || fabsf(tb_length_sq(nrm) - 1.0f) > 1e-4f)
       return "polygon normals are not unit (build it with tb_make_polygon)";
+    /* the outward normal of edge i: perpendicular to it, on its right */
+    float len = tb_length(e);
+    if (fabsf(tb_dot(nrm, e)) > 1e-3f * len || tb_cross(e, nrm) >= 0.0f)
+      return "polygon normals are not the outward normals of their edges (build it with tb_make_polygon)";
+  }
+  if (wraps != 1) return "polygon is not convex: its edges wind more than once (build it with tb_make_polygon)";
+  /* the centroid lies inside (the continuous pass and the chain manifolds use it) */
+  if (!tb_vec_finite(p->centroid)) return "polygon centroid is not finite (build it with tb_make_polygon)";
+  for (int i = 0; i < n; ++i) {
+    if (tb_dot(p->normals[i], tb_sub(p->centroid, p->vertices[i])) >= 0.0f)
+      return "polygon centroid lies outside the polygon (build it with tb_make_polygon)";
   }
   return NULL;
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "geometry.h"
 #include "math_internal.h"
 
 static int compare_points(const void* pa, const void* pb) {
@@ -135,13 +136,21 @@ tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb
   tb_transform xf = {center, angle == 0.0f ? (tb_rot){1.0f, 0.0f} : tb_make_rot(angle)};
   const tb_vec2 corners[4] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
   const tb_vec2 normals[4] = {{0.0f, -1.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {-1.0f, 0.0f}};
-  memset(out, 0, sizeof *out);
-  out->count = 4;
+  tb_polygon box;
+  memset(&box, 0, sizeof box);
+  box.count = 4;
   for (int i = 0; i < 4; ++i) {
-    out->vertices[i] = tb_transform_point(xf, corners[i]);
-    out->normals[i] = tb_rotate(xf.q, normals[i]);
+    box.vertices[i] = tb_transform_point(xf, corners[i]);
+    box.normals[i] = tb_rotate(xf.q, normals[i]);
   }
-  out->centroid = center;
+  box.centroid = center;
+  /* far from the origin a small box can collapse to fewer distinct float
+   * points: refuse it rather than hand out a polygon no shape accepts */
+  const char* why = tb_check_polygon(&box);
+  if (why != NULL)
+    return tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON, "tb_make_box: a box of half-extents %g x %g at (%g, %g): %s",
+                   (double)hx, (double)hy, (double)center.x, (double)center.y, why);
+  *out = box;
   return TB_OK;
 }
 

@@ -37,7 +37,11 @@ static inline tb_transform relative_transform(tb_transform a, tb_transform b) {
   return (tb_transform){tb_inv_rotate(a.q, tb_sub(b.p, a.p)), q};
 }
 
-static bool transform_ok(tb_transform xf) { return tb_vec_finite(xf.p) && isfinite(xf.q.c) && isfinite(xf.q.s); }
+/* Placed within TB_MAX_LENGTH and turned by a unit rotation (as the queries ask). */
+static bool transform_ok(tb_transform xf) {
+  return tb_point_ok(xf.p) && isfinite(xf.q.c) && isfinite(xf.q.s) &&
+         fabsf(xf.q.c * xf.q.c + xf.q.s * xf.q.s - 1.0f) <= 1e-3f;
+}
 
 /* Public entry points reject NULL shapes and non-finite transforms with an empty
  * manifold (the shapes themselves are trusted: tb_check_* vetted them). */
@@ -47,7 +51,9 @@ static inline bool args_ok(const void* a, tb_transform xfa, const void* b, tb_tr
     return false;
   }
   if (!transform_ok(xfa) || !transform_ok(xfb)) {
-    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: transform %s is not finite", fn, transform_ok(xfa) ? "xfb" : "xfa");
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT,
+            "%s: transform %s is not finite, beyond TB_MAX_LENGTH or not a unit rotation", fn,
+            transform_ok(xfa) ? "xfb" : "xfa");
     return false;
   }
   return true;
@@ -390,6 +396,7 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
     }
   }
   float rr = fp.ref->radius, ri = fp.inc->radius;
+  tb_vec2 first = {0.0f, 0.0f};
   for (int k = 0; k < 2; ++k) {
     tb_vec2 q = p[k];
     uint32_t id;
@@ -405,6 +412,12 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
     float sq = tb_dot(fp.n, tb_sub(q, r1)); /* core separation of this point */
     float sep = sq - rr - ri;
     if (!(sep < TB_SPECULATIVE_DISTANCE)) continue;
+    /* an incident edge that meets the slab in a single point (one vertex on a
+     * side plane, the other outside) clips to that vertex twice: keep one, as
+     * the swapped order does (two coincident points make the solver's 2x2
+     * block singular) */
+    if (m->count == 1 && tb_distance_sq(q, first) <= 1e-12f * (1.0f + tb_length_sq(q))) continue;
+    first = q;
     /* reference surface at q - sq n + rr n, incident surface at q - ri n */
     add_point(m, tb_mul_add(q, 0.5f * (rr - sq - ri), fp.n), sep, id);
   }

@@ -46,6 +46,27 @@ static tb_result check_callback(tb_world* w, const char* fn, bool present) {
   return TB_OK;
 }
 
+/* User callbacks run with the world locked: the trees are being walked, so a
+ * change from inside one (destroying or creating a shape, moving a body) is
+ * refused with TB_ERR_LOCKED instead of freeing or moving nodes under the walk.
+ * Reading the world, and nested queries, stay allowed. */
+static float call_cast(tb_world* w, tb_cast_fn* fn, tb_shape_id shape, tb_vec2 point, tb_vec2 normal, float fraction,
+                       void* context) {
+  bool was_locked = w->locked;
+  w->locked = true;
+  float r = fn(shape, point, normal, fraction, context);
+  w->locked = was_locked;
+  return r;
+}
+
+static bool call_overlap(tb_world* w, tb_overlap_fn* fn, tb_shape_id shape, void* context) {
+  bool was_locked = w->locked;
+  w->locked = true;
+  bool r = fn(shape, context);
+  w->locked = was_locked;
+  return r;
+}
+
 /* ---- rays ---------------------------------------------------------------- */
 
 typedef struct ray_context {
@@ -65,7 +86,7 @@ static float ray_callback(const tb_tree_ray_input* input, int32_t proxy, int32_t
   tb_cast_output out = {0};
   ray_cast_shape(s, tb_body_at(rc->w, s->body)->transform, &ray, &out);
   if (!out.hit) return -1.0f;
-  float r = rc->fn(tb_make_shape_id(rc->w, shape), out.point, out.normal, out.fraction, rc->context);
+  float r = call_cast(rc->w, rc->fn, tb_make_shape_id(rc->w, shape), out.point, out.normal, out.fraction, rc->context);
   if (r >= 0.0f && r < rc->fraction) rc->fraction = r;
   return r;
 }
@@ -203,7 +224,7 @@ static bool overlap_callback(int32_t proxy, int32_t shape, void* context) {
       break;
     }
   }
-  if (hit && !oc->fn(tb_make_shape_id(oc->w, shape), oc->context)) {
+  if (hit && !call_overlap(oc->w, oc->fn, tb_make_shape_id(oc->w, shape), oc->context)) {
     oc->stopped = true;
     return false;
   }
@@ -312,7 +333,7 @@ static bool shape_cast_callback(int32_t proxy, int32_t shape, void* context) {
   tb_cast_output out;
   if (tb_shape_cast(&in, &out) != TB_OK || !out.hit) return true;
   float fraction = out.fraction * sc->fraction;
-  float r = sc->fn(tb_make_shape_id(sc->w, shape), out.point, out.normal, fraction, sc->context);
+  float r = call_cast(sc->w, sc->fn, tb_make_shape_id(sc->w, shape), out.point, out.normal, fraction, sc->context);
   if (r == 0.0f) {
     sc->stopped = true;
     return false;

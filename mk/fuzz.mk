@@ -1,0 +1,49 @@
+# make fuzz, make fuzz-smoke: libFuzzer harnesses (issue 7). Included by the Makefile.
+# Each harness in fuzz/ is built with clang -fsanitize=fuzzer,address,undefined
+# together with the library sources, and runs from its seed corpus in the repo
+# (fuzz/corpus/NAME, read only) plus what it finds (build/fuzz/corpus/NAME, not
+# committed). A failed invariant or a sanitizer report stops the run and leaves
+# the input in build/fuzz/crash-NAME-*; replay it with build/fuzz/fuzz_NAME FILE.
+#   make fuzz                 each harness for FUZZ_SECONDS (default 180 s)
+#   make fuzz-smoke           each harness for 20 s (CI)
+#   make fuzz FUZZ_NAMES=hull only one harness
+FUZZ_CC ?= clang
+FUZZ_SECONDS ?= 180
+FUZZ_NAMES ?= hull manifold api
+FUZZ_DIR := build/fuzz
+FUZZ_CFLAGS := -std=c17 $(WARN) -ffp-contract=off -O1 -g -Iinclude -Ifuzz \
+  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_BIN := $(FUZZ_NAMES:%=$(FUZZ_DIR)/fuzz_%)
+FORMATTED += fuzz/*.c fuzz/*.h
+
+$(FUZZ_DIR)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(LIB_SRC) $(wildcard src/*.h) include/tumble.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ $< $(LIB_SRC) -lm
+
+# $(call fuzz_run,NAME,SECONDS)
+define fuzz_run
+	@mkdir -p $(FUZZ_DIR)/corpus/$(1)
+	@echo "== fuzz_$(1): $(2) s"
+	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  $(FUZZ_DIR)/fuzz_$(1) $(FUZZ_DIR)/corpus/$(1) fuzz/corpus/$(1) -max_total_time=$(2) -timeout=10 \
+	  -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=$(FUZZ_DIR)/crash-$(1)- 2>$(FUZZ_DIR)/fuzz_$(1).log \
+	  || { grep -E 'invariant failed|ERROR|SUMMARY|Test unit written' $(FUZZ_DIR)/fuzz_$(1).log; echo $(1) >> $(FUZZ_DIR)/failed; }
+	@grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ +DONE' $(FUZZ_DIR)/fuzz_$(1).log | tr '\n' ' '; echo
+
+endef
+
+.PHONY: fuzz fuzz-smoke fuzz-build
+fuzz-build:
+	@tools/deps.sh fuzz
+	@$(MAKE) --no-print-directory $(FUZZ_BIN)
+
+# every harness runs even when one fails; the target fails at the end
+fuzz: fuzz-build
+	@rm -f $(FUZZ_DIR)/failed
+	$(foreach n,$(FUZZ_NAMES),$(call fuzz_run,$(n),$(FUZZ_SECONDS)))
+	@if [ -f $(FUZZ_DIR)/failed ]; then echo "== fuzz: failed: $$(cat $(FUZZ_DIR)/failed | tr '\n' ' ')"; exit 1; fi
+
+fuzz-smoke: fuzz-build
+	@rm -f $(FUZZ_DIR)/failed
+	$(foreach n,$(FUZZ_NAMES),$(call fuzz_run,$(n),20))
+	@if [ -f $(FUZZ_DIR)/failed ]; then echo "== fuzz-smoke: failed: $$(cat $(FUZZ_DIR)/failed | tr '\n' ' ')"; exit 1; fi
