@@ -29,17 +29,25 @@ tb_world_def tb_default_world_def(void) {
                         .enable_warm_starting = true};
 }
 
-static tb_result check_contact_tuning(tb_world* w, const char* fn, float hertz, float zeta, float push) {
-  tb_result r = tb_check_positive(w, fn, "contact hertz", hertz);
-  if (r == TB_OK) r = tb_check_non_negative(w, fn, "contact damping ratio", zeta);
-  if (r == TB_OK) r = tb_check_non_negative(w, fn, "contact push max velocity", push);
+/* names[] are the arguments as the caller spells them (a def field or a
+ * setter parameter), so the message names what to fix. */
+static tb_result check_contact_tuning(tb_world* w, const char* fn, const char* const names[3], float hertz, float zeta,
+                                      float push) {
+  tb_result r = tb_check_positive(w, fn, names[0], hertz);
+  if (r == TB_OK) r = tb_check_non_negative(w, fn, names[1], zeta);
+  if (r == TB_OK) r = tb_check_non_negative(w, fn, names[2], push);
   return r;
 }
-static tb_result check_joint_tuning(tb_world* w, const char* fn, float hertz, float zeta) {
-  tb_result r = tb_check_positive(w, fn, "joint hertz", hertz);
-  if (r == TB_OK) r = tb_check_non_negative(w, fn, "joint damping ratio", zeta);
+static tb_result check_joint_tuning(tb_world* w, const char* fn, const char* const names[2], float hertz, float zeta) {
+  tb_result r = tb_check_positive(w, fn, names[0], hertz);
+  if (r == TB_OK) r = tb_check_non_negative(w, fn, names[1], zeta);
   return r;
 }
+static const char* const def_contact_names[3] = {"def->contact_hertz", "def->contact_damping_ratio",
+                                                 "def->contact_push_max_velocity"};
+static const char* const def_joint_names[2] = {"def->joint_hertz", "def->joint_damping_ratio"};
+static const char* const setter_contact_names[3] = {"hertz", "damping_ratio", "push_max_velocity"};
+static const char* const setter_joint_names[2] = {"hertz", "damping_ratio"};
 
 static tb_result check_integrator(tb_world* w, const char* fn, tb_integrator in) {
   if ((int)in < (int)TB_INTEGRATOR_SEMI_IMPLICIT_EULER || (int)in > (int)TB_INTEGRATOR_RK4)
@@ -59,9 +67,10 @@ tb_world_id tb_create_world(const tb_world_def* def) {
     return null_id;
   }
   if (check_integrator(NULL, "tb_create_world", def->integrator) != TB_OK) return null_id;
-  if (check_contact_tuning(NULL, "tb_create_world", def->contact_hertz, def->contact_damping_ratio,
+  if (check_contact_tuning(NULL, "tb_create_world", def_contact_names, def->contact_hertz, def->contact_damping_ratio,
                            def->contact_push_max_velocity) != TB_OK ||
-      check_joint_tuning(NULL, "tb_create_world", def->joint_hertz, def->joint_damping_ratio) != TB_OK ||
+      check_joint_tuning(NULL, "tb_create_world", def_joint_names, def->joint_hertz, def->joint_damping_ratio) !=
+          TB_OK ||
       tb_check_non_negative(NULL, "tb_create_world", "def->restitution_threshold", def->restitution_threshold) !=
           TB_OK ||
       tb_check_positive(NULL, "tb_create_world", "def->maximum_linear_speed", def->maximum_linear_speed) != TB_OK)
@@ -370,7 +379,7 @@ tb_result tb_world_set_contact_tuning(tb_world_id id, float hertz, float damping
   const char* fn = "tb_world_set_contact_tuning";
   tb_world* w = tb_world_get_unlocked(id, fn);
   if (w == NULL) return tb_last_result();
-  tb_result r = check_contact_tuning(w, fn, hertz, damping_ratio, push_max_velocity);
+  tb_result r = check_contact_tuning(w, fn, setter_contact_names, hertz, damping_ratio, push_max_velocity);
   if (r != TB_OK) return r;
   w->contact_hertz = hertz;
   w->contact_damping_ratio = damping_ratio;
@@ -382,7 +391,7 @@ tb_result tb_world_set_joint_tuning(tb_world_id id, float hertz, float damping_r
   const char* fn = "tb_world_set_joint_tuning";
   tb_world* w = tb_world_get_unlocked(id, fn);
   if (w == NULL) return tb_last_result();
-  tb_result r = check_joint_tuning(w, fn, hertz, damping_ratio);
+  tb_result r = check_joint_tuning(w, fn, setter_joint_names, hertz, damping_ratio);
   if (r != TB_OK) return r;
   w->joint_hertz = hertz;
   w->joint_damping_ratio = damping_ratio;
