@@ -9,6 +9,8 @@
 #   make fuzz FUZZ_NAMES=hull only one harness
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 180
+# a fixed seed makes a run repeatable (libFuzzer picks one from the clock otherwise)
+FUZZ_SEED ?= 1
 FUZZ_NAMES ?= hull manifold api
 FUZZ_DIR := build/fuzz
 FUZZ_CFLAGS := -std=c17 $(WARN) -ffp-contract=off -O1 -g -Iinclude -Ifuzz \
@@ -25,7 +27,7 @@ define fuzz_run
 	@mkdir -p $(FUZZ_DIR)/corpus/$(1)
 	@echo "== fuzz_$(1): $(2) s"
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  $(FUZZ_DIR)/fuzz_$(1) $(FUZZ_DIR)/corpus/$(1) fuzz/corpus/$(1) -max_total_time=$(2) -timeout=10 \
+	  $(FUZZ_DIR)/fuzz_$(1) $(FUZZ_DIR)/corpus/$(1) fuzz/corpus/$(1) -max_total_time=$(2) -seed=$(FUZZ_SEED) -timeout=10 \
 	  -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix=$(FUZZ_DIR)/crash-$(1)- 2>$(FUZZ_DIR)/fuzz_$(1).log \
 	  || { grep -E 'invariant failed|ERROR|SUMMARY|Test unit written' $(FUZZ_DIR)/fuzz_$(1).log; echo $(1) >> $(FUZZ_DIR)/failed; }
 	@grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ +DONE' $(FUZZ_DIR)/fuzz_$(1).log | tr '\n' ' '; echo

@@ -350,6 +350,7 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
  *    distance. An incident edge wholly outside the slab (a degenerate case, e.g.
  *    two collinear segments end to end, where the segments' face normals are not
  *    enough axes) falls back to step 3's closest points. */
+#define TB_SLAB_TOLERANCE 1e-5f /* m: far above float rounding at game sizes, far below a slop */
 static void collide_cores(local_manifold* m, const core* a, const core* b) {
   float limit = a->radius + b->radius + TB_SPECULATIVE_DISTANCE;
   int ea, eb;
@@ -383,8 +384,12 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
   tb_vec2 t = tb_left_perp(fp.n);
   float len = tb_dot(tb_sub(r2, r1), t);
   float u[2] = {tb_dot(tb_sub(p[0], r1), t), tb_dot(tb_sub(p[1], r1), t)};
-  bool outside = (u[0] < 0.0f && u[1] < 0.0f) || (u[0] > len && u[1] > len);
-  bool leaves = u[0] < 0.0f || u[0] > len || u[1] < 0.0f || u[1] > len;
+  /* A vertex within TB_SLAB_TOLERANCE of a side plane counts as inside: the
+   * choice below between one closest point and clipping must not hang on the
+   * rounding of u, which differs when the shapes are swapped. */
+  const float e = TB_SLAB_TOLERANCE;
+  bool outside = (u[0] < -e && u[1] < -e) || (u[0] > len + e && u[1] > len + e);
+  bool leaves = u[0] < -e || u[0] > len + e || u[1] < -e || u[1] > len + e;
   /* with both incident vertices in the slab the nearer one faces the reference
    * edge: only an incident edge that leaves the slab can meet it at a vertex */
   if (outside || (leaves && fp.s > TB_CORE_GAP_TOLERANCE)) {
