@@ -860,7 +860,11 @@ static int make_settings(engine_setting* out, bool integrators, int max_hz) {
         if (g_quick && !((hz_full[h] == 60 && (ss == 1 || ss == 4 || ss == 8)) ||
                          ((hz_full[h] == 30 || hz_full[h] == 120) && ss == 4)))
           continue;
-        engine_setting es = {&bench_tumble_engine, {dt, ss, k, 0, 0}, hz_full[h] == 60 && ss == 4 && k == 0};
+        /* integrator index = tb_integrator; scenes without the sweep use
+         * tumble's default, midpoint (1), which is also the default row */
+        int integrator = integrators ? k : 1;
+        engine_setting es = {
+            &bench_tumble_engine, {dt, ss, integrator, 0, 0}, hz_full[h] == 60 && ss == 4 && integrator == 1};
         out[n++] = es;
       }
     }
