@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "render/camera.h"
+#include "render/cli_args.h"
 #include "render/gl_draw.h"
 #include "render/offscreen.h"
 #include "render/png_write.h"
@@ -53,26 +54,6 @@ static void usage(FILE* to) {
           "\n"
           "One frame goes to DIR/NAME.png; a sequence to DIR/NAME/frame_00000.png ...\n",
           STEP_HZ, SUBSTEPS);
-}
-
-static bool parse_int(const char* text, int lo, int hi, int* out) {
-  if (text == NULL || *text == '\0') return false;
-  char* end = NULL;
-  errno = 0;
-  long v = strtol(text, &end, 10);
-  if (errno != 0 || *end != '\0' || v < lo || v > hi) return false;
-  *out = (int)v;
-  return true;
-}
-
-static bool parse_size(const char* text, int* w, int* h) {
-  if (text == NULL) return false;
-  const char* x = strchr(text, 'x');
-  if (x == NULL || x - text >= 16) return false;
-  char first[16];
-  memcpy(first, text, (size_t)(x - text));
-  first[x - text] = '\0';
-  return parse_int(first, 16, 8192, w) && parse_int(x + 1, 16, 8192, h);
 }
 
 static int bad_usage(const char* fmt, const char* arg) {
@@ -271,13 +252,15 @@ int main(int argc, char** argv) {
       o.scene = v;
       ++i;
     } else if (strcmp(a, "--frames") == 0) {
-      if (!parse_int(v, 1, 100000, &o.frames)) return bad_usage("--frames needs a whole number 1 to 100000, not %s", v);
+      if (!demo_parse_int(v, 1, 100000, &o.frames))
+        return bad_usage("--frames needs a whole number 1 to 100000, not %s", v);
       ++i;
     } else if (strcmp(a, "--every") == 0) {
-      if (!parse_int(v, 1, 100000, &o.every)) return bad_usage("--every needs a whole number 1 to 100000, not %s", v);
+      if (!demo_parse_int(v, 1, 100000, &o.every))
+        return bad_usage("--every needs a whole number 1 to 100000, not %s", v);
       ++i;
     } else if (strcmp(a, "--size") == 0) {
-      if (!parse_size(v, &o.width, &o.height))
+      if (!demo_parse_size(v, 16, 8192, &o.width, &o.height))
         return bad_usage("--size needs WxH with each 16 to 8192 (e.g. 1280x720), not %s", v);
       ++i;
     } else if (strcmp(a, "--scale") == 0) {

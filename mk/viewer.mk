@@ -8,7 +8,7 @@
 VIEWER_BIN := $(BUILD)/tumble-viewer
 VIEWER_SRC := $(wildcard demos/viewer/*.c)
 VIEWER_OBJ := $(VIEWER_SRC:%.c=$(BUILD)/obj/%.o)
-VIEWER_RENDER_OBJ := $(patsubst %,$(BUILD)/obj/demos/render/%.o,gl_draw camera font)
+VIEWER_RENDER_OBJ := $(patsubst %,$(BUILD)/obj/demos/render/%.o,gl_draw camera font cli_args)
 VIEWER_HAVE_SDL := $(shell pkg-config --exists sdl2 2>/dev/null && echo yes)
 VIEWER_CFLAGS = $(shell pkg-config --cflags sdl2 2>/dev/null)
 VIEWER_LIBS = $(shell pkg-config --libs sdl2 2>/dev/null) $(shell pkg-config --libs gl 2>/dev/null || echo -lGL)

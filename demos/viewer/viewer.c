@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "render/camera.h"
+#include "render/cli_args.h"
 #include "render/gl_draw.h"
 #include "scenes/scenes.h"
 #include "script.h"
@@ -89,26 +90,6 @@ static int bad_usage(const char* fmt, const char* arg) {
   fprintf(stderr, fmt, arg == NULL ? "(missing)" : arg);
   fprintf(stderr, "\n(try tumble-viewer --help)\n");
   return 2;
-}
-
-static bool parse_int(const char* text, int lo, int hi, int* out) {
-  if (text == NULL || *text == '\0') return false;
-  char* end = NULL;
-  errno = 0;
-  long v = strtol(text, &end, 10);
-  if (errno != 0 || *end != '\0' || v < lo || v > hi) return false;
-  *out = (int)v;
-  return true;
-}
-
-static bool parse_size(const char* text, int* w, int* h) {
-  if (text == NULL) return false;
-  const char* x = strchr(text, 'x');
-  if (x == NULL || x - text >= 16) return false;
-  char first[16];
-  memcpy(first, text, (size_t)(x - text));
-  first[x - text] = '\0';
-  return parse_int(first, 64, 8192, w) && parse_int(x + 1, 64, 8192, h);
 }
 
 /* ---- the view ---------------------------------------------------------------------- */
@@ -502,11 +483,11 @@ int main(int argc, char** argv) {
       o.scene = v;
       ++i;
     } else if (strcmp(arg, "--frames") == 0) {
-      if (!parse_int(v, 1, 100000000, &o.frames))
+      if (!demo_parse_int(v, 1, 100000000, &o.frames))
         return bad_usage("--frames needs a whole number 1 to 100000000, not %s", v);
       ++i;
     } else if (strcmp(arg, "--size") == 0) {
-      if (!parse_size(v, &o.width, &o.height))
+      if (!demo_parse_size(v, 64, 8192, &o.width, &o.height))
         return bad_usage("--size needs WxH with each 64 to 8192 (e.g. 1280x720), not %s", v);
       ++i;
     } else if (strcmp(arg, "--scale") == 0) {
