@@ -211,14 +211,19 @@ static void remove_proxies(tb_world* w, int body) {
   for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next) tb_broad_phase_destroy_proxy(w, s);
 }
 
-static bool add_proxies(tb_world* w, int body) {
-  for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next) {
-    if (!tb_broad_phase_create_proxy(w, s)) {
-      remove_proxies(w, body);
-      return false;
-    }
+/* Checked before anything changes, so that add_proxies cannot fail after. */
+static tb_result prepare_proxies(tb_world* w, int body, tb_body_type type, const char* fn) {
+  const tb_body* b = tb_body_at(w, body);
+  for (int s = b->shape_list; s >= 0; s = tb_shape_at(w, s)->next) {
+    tb_result r = tb_broad_phase_prepare_insert(w, tb_shape_at(w, s), b->transform, type, b->shape_count, fn);
+    if (r != TB_OK) return r;
   }
-  return true;
+  return TB_OK;
+}
+
+static void add_proxies(tb_world* w, int body) {
+  for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next)
+    (void)tb_broad_phase_create_proxy(w, s);
 }
 
 void tb_body_update_proxies(tb_world* w, int body, tb_vec2 displacement) {
@@ -272,17 +277,16 @@ tb_result tb_body_set_type(tb_body_id id, tb_body_type type) {
   tb_result r = check_type(w, __func__, type);
   if (r != TB_OK) return r;
   if (b->type == type) return TB_OK;
+  if (b->enabled) {
+    r = prepare_proxies(w, id.index1 - 1, type, __func__);
+    if (r != TB_OK) return r;
+  }
   /* the shapes move to the tree of the new type; contacts are found anew */
   wake_touching(w, id.index1 - 1);
   tb_remove_body_from_sets(w, id.index1 - 1);
   if (b->enabled) remove_proxies(w, id.index1 - 1);
-  tb_body_type old = b->type;
   b->type = type;
-  if (b->enabled && !add_proxies(w, id.index1 - 1)) {
-    b->type = old;
-    (void)add_proxies(w, id.index1 - 1);
-    return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the broad phase", __func__);
-  }
+  if (b->enabled) add_proxies(w, id.index1 - 1);
   if (type == TB_STATIC_BODY) {
     b->linear_velocity = zero2;
     b->angular_velocity = 0.0f;
@@ -434,9 +438,11 @@ bool tb_body_is_enabled(tb_body_id id) {
 tb_result tb_body_set_enabled(tb_body_id id, bool enabled) {
   GET_BODY_FOR_CHANGE(id);
   if (b->enabled == enabled) return TB_OK;
-  if (enabled && !add_proxies(w, id.index1 - 1))
-    return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the broad phase", __func__);
-  if (!enabled) {
+  if (enabled) {
+    tb_result r = prepare_proxies(w, id.index1 - 1, b->type, __func__);
+    if (r != TB_OK) return r;
+    add_proxies(w, id.index1 - 1);
+  } else {
     wake_touching(w, id.index1 - 1);
     tb_remove_body_from_sets(w, id.index1 - 1);
     remove_proxies(w, id.index1 - 1);

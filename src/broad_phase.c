@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "geometry.h"
+#include "math_internal.h"
 #include "world.h"
 
 tb_result tb_broad_phase_init(tb_broad_phase* bp) {
@@ -136,6 +137,36 @@ bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
     return false;
   }
   return true;
+}
+
+bool tb_broad_phase_reserve(tb_world* w, tb_body_type tree, int proxies) {
+  tb_broad_phase* bp = &w->broad_phase;
+  return tb_tree_reserve(&bp->trees[tree], proxies) &&
+         tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + proxies, sizeof(int));
+}
+
+tb_result tb_broad_phase_prepare_insert(tb_world* w, const tb_shape* s, tb_transform xf, tb_body_type tree,
+                                        int proxies, const char* fn) {
+  tb_aabb box = tb_shape_geom_aabb(s, xf);
+  if (!tb_point_ok(box.lower) || !tb_point_ok(box.upper))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT,
+                   "%s: the shape's box reaches beyond TB_MAX_LENGTH (body at (%g, %g)); move the body back first", fn,
+                   (double)xf.p.x, (double)xf.p.y);
+  if (!tb_broad_phase_reserve(w, tree, proxies))
+    return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the broad phase", fn);
+  return TB_OK;
+}
+
+bool tb_broad_phase_touch_proxy(tb_world* w, int shape_index) {
+  if (tb_shape_at(w, shape_index)->proxy < 0) return true;
+  return queue_move(w, shape_index);
+}
+
+bool tb_broad_phase_refilter_proxy(tb_world* w, int shape_index) {
+  tb_shape* s = tb_shape_at(w, shape_index);
+  if (s->proxy < 0) return true;
+  (void)tb_tree_set_category_bits(&w->broad_phase.trees[s->tree], s->proxy, s->filter.category_bits);
+  return queue_move(w, shape_index);
 }
 
 void tb_broad_phase_destroy_proxy(tb_world* w, int shape_index) {

@@ -31,6 +31,22 @@ void tb_broad_phase_free(tb_broad_phase* bp);
 bool tb_broad_phase_create_proxy(struct tb_world* w, int shape);
 void tb_broad_phase_destroy_proxy(struct tb_world* w, int shape);
 void tb_broad_phase_move_proxy(struct tb_world* w, int shape, tb_vec2 displacement);
+/* Room for proxies more in one tree and in the move buffer, so that the
+ * inserts (and queueing) that follow cannot fail; false when out of memory. */
+bool tb_broad_phase_reserve(struct tb_world* w, tb_body_type tree, int proxies);
+/* Before a shape (with its body at xf) enters the tree: its box must lie within
+ * TB_MAX_LENGTH (a body that flew beyond keeps its last proxy) and room for
+ * proxies is reserved, so the insert cannot fail half-way through a change.
+ * Sets the error, naming fn, otherwise. */
+struct tb_shape;
+tb_result tb_broad_phase_prepare_insert(struct tb_world* w, const struct tb_shape* s, tb_transform xf,
+                                        tb_body_type tree, int proxies, const char* fn);
+/* Queue a proxy for pair finding without moving it (pairs that may exist anew,
+ * e.g. after a joint that kept two bodies apart is gone). Never fails after
+ * tb_broad_phase_reserve(w, tree, 1). */
+bool tb_broad_phase_touch_proxy(struct tb_world* w, int shape);
+/* The shape's category bits changed: update the tree and queue the proxy. */
+bool tb_broad_phase_refilter_proxy(struct tb_world* w, int shape);
 /* New contacts for the pairs of the queued proxies; clears the queue. */
 void tb_broad_phase_update_pairs(struct tb_world* w);
 

@@ -682,7 +682,7 @@ static void destroy_contacts_between(tb_world* w, int body_a, int body_b) {
 }
 
 /* Two bodies may collide again: queue the shapes of the one with fewer shapes
- * for pair finding (re-inserting their proxies), so that the contacts between
+ * for pair finding, so that the contacts between
  * them come back at the next step even if nothing moves. */
 static void refind_pairs(tb_world* w, int body_a, int body_b) {
   if (!tb_joints_allow_collision(w, body_a, body_b)) return;
@@ -690,10 +690,8 @@ static void refind_pairs(tb_world* w, int body_a, int body_b) {
   const tb_body* b = tb_body_at(w, body_b);
   int body = a->shape_count <= b->shape_count ? body_a : body_b;
   for (int s = tb_body_at(w, body)->shape_list; s >= 0; s = tb_shape_at(w, s)->next) {
-    if (tb_shape_at(w, s)->proxy < 0) continue;
-    tb_broad_phase_destroy_proxy(w, s);
     /* out of memory: the pair is found when the shape next moves out of its box */
-    (void)tb_broad_phase_create_proxy(w, s);
+    (void)tb_broad_phase_touch_proxy(w, s);
   }
 }
 

@@ -103,12 +103,14 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
 }
 
 int tb_shape_attach(tb_world* w, int body_index, const tb_shape* proto, const char* fn) {
+  tb_body* b = tb_body_at(w, body_index);
+  if (b->enabled && tb_broad_phase_prepare_insert(w, proto, b->transform, b->type, 1, fn) != TB_OK) return -1;
   int index = tb_pool_alloc(&w->shapes);
   if (index < 0) {
     tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for another shape", fn);
     return -1;
   }
-  tb_body* b = tb_body_at(w, body_index);
+  b = tb_body_at(w, body_index); /* the pool may have moved */
   tb_shape* s = tb_shape_at(w, index);
   *s = *proto;
   s->body = body_index;
@@ -118,11 +120,7 @@ int tb_shape_attach(tb_world* w, int body_index, const tb_shape* proto, const ch
   if (b->shape_list >= 0) tb_shape_at(w, b->shape_list)->prev = index;
   b->shape_list = index;
   b->shape_count += 1;
-  if (b->enabled && !tb_broad_phase_create_proxy(w, index)) {
-    tb_shape_detach(w, index);
-    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the shape's broad-phase proxy", fn);
-    return -1;
-  }
+  if (b->enabled) (void)tb_broad_phase_create_proxy(w, index); /* prepared: cannot fail */
   return index;
 }
 
@@ -264,13 +262,12 @@ tb_filter tb_shape_get_filter(tb_shape_id id) {
 tb_result tb_shape_set_filter(tb_shape_id id, tb_filter filter) {
   GET_SHAPE_FOR_CHANGE(id);
   int index = id.index1 - 1;
+  if (s->proxy >= 0 && !tb_broad_phase_reserve(w, (tb_body_type)s->tree, 1))
+    return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the broad phase", __func__);
+  /* contacts end; the proxy is queued so that pair finding runs on the new filter */
   tb_contacts_destroy_of_body(w, s->body, index);
   s->filter = filter;
-  if (s->proxy >= 0) {
-    tb_broad_phase_destroy_proxy(w, index);
-    if (!tb_broad_phase_create_proxy(w, index))
-      return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory to re-insert the shape", __func__);
-  }
+  (void)tb_broad_phase_refilter_proxy(w, index);
   return TB_OK;
 }
 

@@ -420,6 +420,11 @@ int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits
   return leaf;
 }
 
+bool tb_tree_reserve(tb_tree* tree, int32_t proxies) {
+  /* each insert takes a leaf and a new parent */
+  return proxies <= INT32_MAX / 2 && reserve_nodes(tree, 2 * proxies);
+}
+
 bool tb_tree_destroy_proxy(tb_tree* tree, int32_t proxy) {
   if (!tb_tree_is_proxy(tree, proxy)) return false;
   remove_leaf(tree, proxy);

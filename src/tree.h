@@ -79,6 +79,9 @@ void tb_tree_destroy(tb_tree* tree);
  * Returns its id, or TB_TREE_NULL on bad input or when out of memory. */
 int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits, int32_t user_id);
 /* False (and nothing done) when proxy is not a live proxy of this tree. */
+/* Room for proxies more, so that as many tb_tree_create_proxy calls cannot run
+ * out of memory; false when out of memory. */
+bool tb_tree_reserve(tb_tree* tree, int32_t proxies);
 bool tb_tree_destroy_proxy(tb_tree* tree, int32_t proxy);
 /* The proxy's tight AABB is now aabb, and it is expected to move by about
  * displacement before the next call ({0, 0}: no prediction). Re-inserts, with a

@@ -1,5 +1,7 @@
 /* Bodies and worlds through the public API: placement, transforms, momentum,
  * energy, mass overrides, shapes, user data, handles. */
+#include <string.h>
+
 #include "test_util.h"
 
 START_TEST(transforms_round_trip) {
@@ -195,6 +197,64 @@ START_TEST(deterministic_hash) {
 }
 END_TEST
 
+/* A filter change takes effect at the next step: two boxes resting one on the
+ * other with masks that exclude each other fall through; a filter that lets
+ * them collide again makes the contact come back without either moving. */
+START_TEST(filter_change_refinds_pairs) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_body_id a = tbt_box_body(w, 0.0f, 0.0f, 0.5f, 0.5f);
+  tb_body_id b = tbt_box_body(w, 0.0f, 0.9f, 0.5f, 0.5f);
+  tb_shape_id sa;
+  ck_assert_int_eq(tb_body_get_shapes(a, &sa, 1), 1);
+  tb_filter apart = tb_default_filter();
+  apart.mask_bits = 0;
+  ck_assert_int_eq(tb_shape_set_filter(sa, apart), TB_OK);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_eq(tb_body_get_contact_capacity(a), 0);
+  ck_assert_int_eq(tb_shape_set_filter(sa, tb_default_filter()), TB_OK);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_eq(tb_body_get_contact_capacity(a), 1);
+  ck_assert_int_eq(tb_body_get_contact_capacity(b), 1);
+  tb_destroy_world(w);
+}
+END_TEST
+
+/* A body that flew beyond TB_MAX_LENGTH keeps its last broad-phase box. A
+ * change that must insert its shapes anew is refused with a message that says
+ * why, and leaves the world as it was; a filter change needs no new box. */
+START_TEST(body_beyond_max_length) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  ck_assert_int_eq(tb_world_set_maximum_linear_speed(w, 1.0e6f), TB_OK);
+  tb_body_id b = tbt_box_body(w, 0.999e7f, 0.0f, 0.5f, 0.5f);
+  ck_assert_int_eq(tb_body_set_linear_velocity(b, (tb_vec2){1.0e6f, 0.0f}), TB_OK);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_float_gt(tb_body_get_position(b).x, TB_MAX_LENGTH);
+  tb_shape_id s;
+  ck_assert_int_eq(tb_body_get_shapes(b, &s, 1), 1);
+  ck_assert_int_eq(tb_shape_set_filter(s, tb_default_filter()), TB_OK);
+  uint64_t before = tb_world_hash(w);
+  ck_assert_int_eq(tb_body_set_type(b, TB_KINEMATIC_BODY), TB_ERR_INVALID_ARGUMENT);
+  ck_assert_ptr_nonnull(strstr(tb_last_error(), "tb_body_set_type: the shape's box reaches beyond TB_MAX_LENGTH"));
+  ck_assert_uint_eq(tb_world_hash(w), before);
+  ck_assert_int_eq(tb_body_get_type(b), TB_DYNAMIC_BODY);
+  tb_shape_def sd = tb_default_shape_def();
+  tb_circle c = {{0.0f, 0.0f}, 0.5f};
+  ck_assert(!tb_shape_is_valid(tb_create_circle_shape(b, &sd, &c)));
+  ck_assert_ptr_nonnull(strstr(tb_last_error(), "beyond TB_MAX_LENGTH"));
+  ck_assert_uint_eq(tb_world_hash(w), before);
+  ck_assert_int_eq(tb_body_set_enabled(b, false), TB_OK);
+  before = tb_world_hash(w);
+  ck_assert_int_eq(tb_body_set_enabled(b, true), TB_ERR_INVALID_ARGUMENT);
+  ck_assert_uint_eq(tb_world_hash(w), before);
+  ck_assert(!tb_body_is_enabled(b));
+  /* moved back, it can enter the broad phase again */
+  ck_assert_int_eq(tb_body_set_transform(b, (tb_vec2){0.0f, 0.0f}, 0.0f), TB_OK);
+  ck_assert_int_eq(tb_body_set_enabled(b, true), TB_OK);
+  ck_assert_int_eq(tb_body_set_type(b, TB_KINEMATIC_BODY), TB_OK);
+  tb_destroy_world(w);
+}
+END_TEST
+
 static Suite* body_suite(void) {
   Suite* s = suite_create("body");
   TCase* tc = tcase_create("body");
@@ -205,6 +265,8 @@ static Suite* body_suite(void) {
   tcase_add_test(tc, shapes_and_user_data);
   tcase_add_test(tc, world_table_and_settings);
   tcase_add_test(tc, deterministic_hash);
+  tcase_add_test(tc, filter_change_refinds_pairs);
+  tcase_add_test(tc, body_beyond_max_length);
   suite_add_tcase(s, tc);
   return s;
 }
