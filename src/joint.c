@@ -156,12 +156,15 @@ static inline sym22 point_mass(const tb_solver_body* a, const tb_solver_body* b,
                  m + ia * ra.x * ra.x + ib * rb.x * rb.x};
 }
 
-/* K^-1 r, or zero for a singular K. */
+/* K^-1 r, or zero for a singular K. In double: K's entries are inverse masses
+ * times squared arms, and for a light body far from its anchor (a 1e-30 kg
+ * body is accepted input) their products overflow a float, inf - inf = NaN. */
 static inline tb_vec2 solve22(sym22 k, tb_vec2 r) {
-  float det = k.a11 * k.a22 - k.a12 * k.a12;
-  if (det == 0.0f) return (tb_vec2){0.0f, 0.0f};
-  float inv = 1.0f / det;
-  return (tb_vec2){inv * (k.a22 * r.x - k.a12 * r.y), inv * (k.a11 * r.y - k.a12 * r.x)};
+  double det = (double)k.a11 * k.a22 - (double)k.a12 * k.a12;
+  if (!(det != 0.0) || !isfinite(det)) return (tb_vec2){0.0f, 0.0f};
+  double inv = 1.0 / det;
+  return (tb_vec2){(float)(inv * ((double)k.a22 * r.x - (double)k.a12 * r.y)),
+                   (float)(inv * ((double)k.a11 * r.y - (double)k.a12 * r.x))};
 }
 
 /* The point constraint C = d (two rows) with softness s: revolute, weld. */
@@ -452,6 +455,7 @@ static void motor_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_body*
 }
 
 /* ==== solver entry points ===================================================== */
+
 
 static void zero_impulses(tb_joint* j) {
   j->linear_impulse = (tb_vec2){0.0f, 0.0f};

@@ -263,7 +263,10 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     float turned = b->angle - b->angle0;
     if (w->enable_sleep && b->enable_sleep) {
       float speed = fmaxf(tb_length(b->linear_velocity), b->max_extent * fabsf(b->angular_velocity));
-      b->sleep_time = speed > b->sleep_threshold ? 0.0f : b->sleep_time + dt;
+      /* a kinematic body moves by script: while it moves at all it stays
+       * awake (a shapeless one spinning has no extent, yet its joints turn) */
+      bool scripted = b->type == TB_KINEMATIC_BODY && (speed > 0.0f || b->angular_velocity != 0.0f);
+      b->sleep_time = speed > b->sleep_threshold || scripted ? 0.0f : b->sleep_time + dt;
     } else {
       b->sleep_time = 0.0f;
     }

@@ -1528,6 +1528,54 @@ START_TEST(defaults_and_setters) {
 }
 END_TEST
 
+/* A body welded 5 m out on a shapeless kinematic body spinning at -20 rad/s
+ * (100 m/s at the anchor, 2,000 m/s^2 of centripetal pull). Every term of the
+ * weld scales with the dynamic body's inverse mass, so its motion must not
+ * depend on its mass: a 1e-30 kg box (accepted input; its effective-mass
+ * determinant overflows a float) follows exactly as a 1 kg box does, and the
+ * kinematic body keeps spinning (a shapeless one has no extent, yet it must not
+ * fall asleep and stop). Found by the API fuzzer as a NaN. */
+static tb_transform weld_to_spinner(float density, float* spin) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_body_def bd = tb_default_body_def();
+  bd.type = TB_KINEMATIC_BODY;
+  bd.angular_velocity = -20.0f;
+  tb_body_id spinner = tb_create_body(w, &bd);
+  bd = tb_default_body_def();
+  bd.type = TB_DYNAMIC_BODY;
+  bd.position = (tb_vec2){5.0f, 0.0f};
+  tb_body_id box = tb_create_body(w, &bd);
+  tb_shape_def sd = tb_default_shape_def();
+  sd.density = density;
+  tb_polygon square;
+  ck_assert_int_eq(tb_make_box(0.5f, 0.5f, &square), TB_OK);
+  ck_assert(!tb_shape_id_is_null(tb_create_polygon_shape(box, &sd, &square)));
+  tb_weld_joint_def jd = tb_default_weld_joint_def();
+  jd.body_a = spinner;
+  jd.body_b = box;
+  jd.local_anchor_a = (tb_vec2){5.0f, 0.0f};
+  ck_assert(!tb_joint_id_is_null(tb_create_weld_joint(w, &jd)));
+  for (int i = 0; i < 120; ++i) ck_assert_int_eq(tb_world_step(w, DT, 4), TB_OK);
+  tb_transform xf = tb_body_get_transform(box);
+  *spin = tb_body_get_angular_velocity(spinner);
+  tb_destroy_world(w);
+  return xf;
+}
+
+START_TEST(weld_to_spinning_kinematic_is_mass_independent) {
+  float spin_light, spin_unit;
+  tb_transform light = weld_to_spinner(1e-30f, &spin_light);
+  tb_transform unit = weld_to_spinner(1.0f, &spin_unit);
+  ck_assert_float_eq(spin_light, -20.0f);
+  ck_assert_float_eq(spin_unit, -20.0f);
+  /* 2 s at -20 rad/s: the box went round 6.4 times and stays on its circle */
+  ck_assert_near(hypot(unit.p.x, unit.p.y), 5.0, 0.1);
+  ck_assert_near(light.p.x, unit.p.x, 1e-4);
+  ck_assert_near(light.p.y, unit.p.y, 1e-4);
+  ck_assert_near(light.q.s, unit.q.s, 1e-4);
+}
+END_TEST
+
 static Suite* joint_suite(void) {
   Suite* s = suite_create("joint");
   TCase* physics = tcase_create("physics");
@@ -1545,6 +1593,7 @@ static Suite* joint_suite(void) {
   tcase_add_test(physics, prismatic_spring_oscillates_at_its_hertz);
   tcase_add_test(physics, weld_holds_cantilever);
   tcase_add_test(physics, weld_angular_spring);
+  tcase_add_test(physics, weld_to_spinning_kinematic_is_mass_independent);
   tcase_add_test(physics, wheel_spring_and_motor);
   tcase_add_test(physics, mouse_pulls_to_target);
   tcase_add_test(physics, motor_joint_reaches_offset);
