@@ -201,9 +201,11 @@ typedef struct tb_world_def {
    * a spring of contact_hertz (> 0, default 30; capped at a quarter of the
    * substep rate) with contact_damping_ratio (>= 0, default 10) that pushes
    * overlapping shapes apart no faster than contact_push_max_velocity (m/s,
-   * >= 0, default 3). Joints use joint_hertz (default 60) and
-   * joint_damping_ratio (default 2, i.e. over-damped) for their drift
-   * correction. */
+   * >= 0, default 3). The rigid parts of joints that form trees (chains,
+   * ragdolls, bridges: any joint graph without a loop through dynamic bodies)
+   * are solved exactly and held at a stiffness of 8 / substep (rad/s) with
+   * joint_damping_ratio (default 2, i.e. over-damped); a joint that closes a
+   * loop uses joint_hertz (default 60) for its drift correction. */
   float contact_hertz;
   float contact_damping_ratio;
   float contact_push_max_velocity;
@@ -659,8 +661,9 @@ tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_t
 /* Joints constrain two bodies. Anchors are in each body's own frame (relative
  * to the body origin). Every joint can be created and destroyed at any time
  * outside the step, also while its bodies sleep (it wakes them). Rigid parts
- * of a joint are solved as soft constraints with the world's joint_hertz and
- * joint_damping_ratio for drift; springs use their own hertz and damping ratio
+ * of a joint are held exactly where the joints form a tree, and otherwise as
+ * soft constraints with the world's joint_hertz and joint_damping_ratio for
+ * drift (see tb_world_def); springs use their own hertz and damping ratio
  * (hertz 0 means no spring). Errors: both bodies the same, bodies of different
  * worlds, non-finite numbers, lower > upper limits, negative forces, hertz or
  * damping ratios. */

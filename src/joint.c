@@ -192,6 +192,7 @@ static void distance_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_bo
   float arm_a = tb_cross(f.ra, u), arm_b = tb_cross(f.rb, u);
   float mass = row_mass(a, b, arm_a, arm_b);
   if (!j->enable_spring) {
+    if (j->in_tree) return;
     float cdot = row_velocity(a, b, u, arm_a, arm_b);
     float impulse = soft_impulse(mass, rigid_part(ctx, use_bias), cdot, len - j->length, j->axial_impulse);
     j->axial_impulse += impulse;
@@ -260,7 +261,7 @@ static void revolute_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_bo
     impulse = limit_impulse(angular_mass, limit_part(ctx, use_bias, c), a->w - b->w, c, &j->upper_impulse);
     apply_angular(a, b, -impulse);
   }
-  solve_point(j, a, b, &f, rigid_part(ctx, use_bias));
+  if (!j->in_tree) solve_point(j, a, b, &f, rigid_part(ctx, use_bias));
 }
 
 static float revolute_axial(const tb_joint* j) {
@@ -313,6 +314,7 @@ static void prismatic_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_b
     impulse = limit_impulse(mass, limit_part(ctx, use_bias, c), cdot, c, &j->upper_impulse);
     apply_row(a, b, n, arm_a, arm_b, -impulse);
   }
+  if (j->in_tree) return;
   /* perpendicular and angular rows as one block */
   tb_vec2 p = tb_left_perp(n);
   float sa = tb_cross(dra, p), sb = tb_cross(f.rb, p);
@@ -377,6 +379,7 @@ static void wheel_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_body*
     impulse = limit_impulse(mass, limit_part(ctx, use_bias, c), cdot, c, &j->upper_impulse);
     apply_row(a, b, n, arm_a, arm_b, -impulse);
   }
+  if (j->in_tree) return;
   tb_vec2 p = tb_left_perp(n);
   float sa = tb_cross(dra, p), sb = tb_cross(f.rb, p);
   float cdot = row_velocity(a, b, p, sa, sb);
@@ -403,12 +406,15 @@ static void wheel_warm_start(tb_joint* j, tb_solver_body* a, tb_solver_body* b) 
 
 static void weld_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_body* a, tb_solver_body* b, bool use_bias) {
   frame f = current_frame(j, a, b);
-  float angular_mass = inv_or_zero(a->inv_inertia + b->inv_inertia);
-  tb_softness s = j->angular_hertz > 0.0f ? j->angular_softness : rigid_part(ctx, use_bias);
-  float impulse = soft_impulse(angular_mass, s, b->w - a->w, f.angle, j->angular_impulse);
-  j->angular_impulse += impulse;
-  apply_angular(a, b, impulse);
-  solve_point(j, a, b, &f, j->hertz > 0.0f ? j->spring_softness : rigid_part(ctx, use_bias));
+  if (j->angular_hertz > 0.0f || !j->in_tree) {
+    float angular_mass = inv_or_zero(a->inv_inertia + b->inv_inertia);
+    tb_softness s = j->angular_hertz > 0.0f ? j->angular_softness : rigid_part(ctx, use_bias);
+    float impulse = soft_impulse(angular_mass, s, b->w - a->w, f.angle, j->angular_impulse);
+    j->angular_impulse += impulse;
+    apply_angular(a, b, impulse);
+  }
+  if (j->hertz > 0.0f || !j->in_tree)
+    solve_point(j, a, b, &f, j->hertz > 0.0f ? j->spring_softness : rigid_part(ctx, use_bias));
 }
 
 static void weld_warm_start(tb_joint* j, tb_solver_body* a, tb_solver_body* b) {
@@ -454,6 +460,69 @@ static void motor_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_body*
   apply_linear(a, b, f.ra, f.rb, linear);
 }
 
+/* ==== rigid rows for the exact tree solve ========================================
+ * The same rows as the solvers above, written out as Jacobians (see joint.h):
+ * a point constraint is the rows x and y of vB + wB x rB - vA - wA x rA, so
+ * jb = (1, 0, -rB.y) and (0, 1, rB.x); an angle row is (0, 0, 1) on both; a
+ * slider's perpendicular row is (p, (d + rA) x p) on A and (p, rB x p) on B;
+ * a rigid distance is (u, rA x u) and (u, rB x u). */
+
+int tb_joint_rigid_row_count(const tb_joint* j) {
+  switch (j->type) {
+    case TB_JOINT_DISTANCE: return j->enable_spring ? 0 : 1;
+    case TB_JOINT_REVOLUTE: return 2;
+    case TB_JOINT_PRISMATIC: return 2;
+    case TB_JOINT_WHEEL: return 1;
+    case TB_JOINT_WELD: return (j->hertz > 0.0f ? 0 : 2) + (j->angular_hertz > 0.0f ? 0 : 1);
+    case TB_JOINT_MOUSE:
+    case TB_JOINT_MOTOR: return 0;
+  }
+  return 0;
+}
+
+static void set_row(tb_rigid_rows* out, tb_vec2 n, float arm_a, float arm_b, float c, float* impulse) {
+  int r = out->count++;
+  out->ja[r][0] = out->jb[r][0] = n.x;
+  out->ja[r][1] = out->jb[r][1] = n.y;
+  out->ja[r][2] = arm_a;
+  out->jb[r][2] = arm_b;
+  out->c[r] = c;
+  out->impulse[r] = impulse;
+}
+
+static void set_point_rows(tb_rigid_rows* out, const frame* f, tb_vec2* impulse) {
+  set_row(out, (tb_vec2){1.0f, 0.0f}, -f->ra.y, -f->rb.y, f->d.x, &impulse->x);
+  set_row(out, (tb_vec2){0.0f, 1.0f}, f->ra.x, f->rb.x, f->d.y, &impulse->y);
+}
+
+void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out) {
+  out->count = 0;
+  frame f = current_frame(j, a, b);
+  const tb_vec2 zero = {0.0f, 0.0f};
+  switch (j->type) {
+    case TB_JOINT_DISTANCE: {
+      float len = tb_length(f.d);
+      tb_vec2 u = tb_normalize(f.d);
+      if (!j->enable_spring) set_row(out, u, tb_cross(f.ra, u), tb_cross(f.rb, u), len - j->length, &j->axial_impulse);
+      break;
+    }
+    case TB_JOINT_REVOLUTE: set_point_rows(out, &f, &j->linear_impulse); break;
+    case TB_JOINT_PRISMATIC:
+    case TB_JOINT_WHEEL: {
+      tb_vec2 p = tb_left_perp(tb_rotate(a->dq, j->axis));
+      set_row(out, p, tb_cross(tb_add(f.d, f.ra), p), tb_cross(f.rb, p), tb_dot(p, f.d), &j->axial_impulse);
+      if (j->type == TB_JOINT_PRISMATIC) set_row(out, zero, 1.0f, 1.0f, f.angle, &j->angular_impulse);
+      break;
+    }
+    case TB_JOINT_WELD:
+      if (j->angular_hertz == 0.0f) set_row(out, zero, 1.0f, 1.0f, f.angle, &j->angular_impulse);
+      if (j->hertz == 0.0f) set_point_rows(out, &f, &j->linear_impulse);
+      break;
+    case TB_JOINT_MOUSE:
+    case TB_JOINT_MOTOR: break;
+  }
+}
+
 /* ==== solver entry points ===================================================== */
 
 
@@ -490,6 +559,7 @@ void tb_joint_prepare(tb_world* w, int index, tb_step_context* ctx) {
     j->skip = !b->enabled || b->type != TB_DYNAMIC_BODY;
   else
     j->skip = !a->enabled || !b->enabled || (a->type != TB_DYNAMIC_BODY && b->type != TB_DYNAMIC_BODY);
+  j->in_tree = false; /* until tb_joint_tree_build takes it */
 
   /* frames at the step start */
   j->frame_b = tb_rotate(b->transform.q, tb_sub(j->local_anchor_b, b->local_center));

@@ -44,6 +44,7 @@ typedef struct tb_joint {
   /* Step scratch, set by tb_joint_prepare. */
   int solver_a, solver_b;   /* indices into ctx->states */
   bool skip;                /* no dynamic body, or a body is disabled */
+  bool in_tree;             /* its rigid rows are solved exactly by joint_tree.c */
   tb_vec2 frame_a, frame_b; /* anchors relative to the centres, world axes, step start */
   tb_vec2 delta_center;     /* centre of B minus centre of A (mouse: minus target) */
   float delta_angle;        /* angle_b - angle_a - reference angle at step start */
@@ -72,6 +73,19 @@ bool tb_joints_allow_collision(const struct tb_world* w, int body_a, int body_b)
 void tb_joint_prepare(struct tb_world* w, int joint, tb_step_context* ctx);
 void tb_joint_warm_start(struct tb_world* w, int joint, tb_step_context* ctx);
 void tb_joint_solve(struct tb_world* w, int joint, tb_step_context* ctx, bool use_bias);
+/* The rigid rows of a joint (the parts the world's joint softness holds, at
+ * most three), for the exact solve of joint trees (joint_tree.c). Row r has
+ * velocity Cdot_r = jb[r] . (vB, wB) - ja[r] . (vA, wA) and position error c[r];
+ * its accumulated impulse is *impulse[r] (applied as +jb on B, -ja on A). */
+typedef struct tb_rigid_rows {
+  int count;
+  float ja[3][3], jb[3][3];
+  float c[3];
+  float* impulse[3];
+} tb_rigid_rows;
+/* How many rigid rows the joint has (0: none, e.g. a mouse or motor joint). */
+int tb_joint_rigid_row_count(const tb_joint* j);
+void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out);
 void tb_joint_store(struct tb_world* w, int joint, const tb_step_context* ctx);
 
 #endif

@@ -208,6 +208,10 @@ int tb_solve(tb_world* w, float dt, int substeps) {
 
   if (!tb_contact_solver_prepare(w, &ctx)) return 0; /* out of memory: the step is skipped */
   for (int k = 0; k < w->step_joint_count; ++k) tb_joint_prepare(w, w->step_joints[k], &ctx);
+  if (!tb_joint_tree_build(w, &ctx)) { /* out of memory: Gauss-Seidel solves every joint */
+    for (int k = 0; k < w->step_joint_count; ++k) tb_joint_at(w, w->step_joints[k])->in_tree = false;
+    w->joint_tree.node_count = 0;
+  }
 
   for (int sub = 0; sub < substeps; ++sub) {
     integrate_velocities(w, &ctx, motions, w->time + (double)sub * h);
@@ -219,9 +223,11 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     }
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, true);
     tb_contact_solver_solve(w, &ctx, true);
+    tb_joint_tree_solve(w, &ctx, true);
     integrate_positions(w, &ctx, motions);
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, false);
     tb_contact_solver_solve(w, &ctx, false);
+    tb_joint_tree_solve(w, &ctx, false);
   }
   tb_contact_solver_finish(w, &ctx);
   for (int k = 0; k < w->step_joint_count; ++k) tb_joint_store(w, w->step_joints[k], &ctx);

@@ -232,6 +232,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   free(w->constraints);
   free(w->wide);
   free(w->step_joints);
+  tb_joint_tree_free(&w->joint_tree);
   free(w->scratch);
   tb_broad_phase_free(&w->broad_phase);
   free(w->begin_events);

@@ -8,6 +8,7 @@
 #include "contact.h"
 #include "error.h"
 #include "joint.h"
+#include "joint_tree.h"
 #include "solver.h"
 #include "pool.h"
 #include "shape.h"
@@ -62,6 +63,7 @@ typedef struct tb_world {
   int wide_capacity, wide_count;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
+  tb_joint_tree joint_tree;
   int* scratch; /* island search stack and marks */
   int scratch_capacity;
   /* events of the last step (cleared when the next one starts) */

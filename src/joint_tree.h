@@ -1,0 +1,39 @@
+/* The exact solve of the rigid joint rows of every joint tree (Baraff, "Linear-
+ * time dynamics using Lagrange multipliers", SIGGRAPH 1996), in place of
+ * Gauss-Seidel for them. See joint_tree.c. */
+#ifndef TB_JOINT_TREE_H
+#define TB_JOINT_TREE_H
+
+#include <stdbool.h>
+
+#include "solver.h"
+
+struct tb_jt_node;
+
+/* Step scratch, grown as needed and kept by the world. */
+typedef struct tb_joint_tree {
+  struct tb_jt_node* nodes;
+  int node_count, node_capacity;
+  int body_nodes; /* nodes [0, body_nodes) are bodies, the rest joints */
+  int* order; /* parents before children */
+  int order_capacity;
+  int* body_scratch; /* per awake body: union-find parent, then its node */
+  int body_capacity;
+  int* edges; /* per body node: its constraint nodes (CSR, first[] in body nodes) */
+  int edge_capacity;
+  tb_softness softness; /* of the biased pass */
+} tb_joint_tree;
+
+struct tb_world;
+
+void tb_joint_tree_free(tb_joint_tree* t);
+/* After the joints are prepared: picks a spanning forest of the step's joints
+ * with rigid rows (a joint that would close a loop stays with Gauss-Seidel),
+ * marks them in_tree and orders the nodes. false when out of memory (then no
+ * joint is in a tree and Gauss-Seidel solves them all). */
+bool tb_joint_tree_build(struct tb_world* w, const tb_step_context* ctx);
+/* One exact solve of every tree's rigid rows at the current positions and
+ * velocities, with the biased softness or (use_bias false) rigid. */
+void tb_joint_tree_solve(struct tb_world* w, tb_step_context* ctx, bool use_bias);
+
+#endif
