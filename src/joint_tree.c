@@ -23,8 +23,8 @@
  * A joint row block is only ever a leaf or an inner node with G > 0 or with
  * body children, so every D is invertible. Static and kinematic bodies are not
  * nodes (their velocity is fixed), so a bridge pinned at both ends is a tree.
- * Joints that would close a loop, and joints on a dynamic body that cannot
- * turn (zero inverse inertia), stay with Gauss-Seidel. Computed in double: the
+ * A group of jointed bodies with a loop, or with a joint on a dynamic body
+ * that cannot turn (zero inverse inertia), stays with Gauss-Seidel. Computed in double: the
  * blocks of a gram body next to a tonne body span many decades. */
 #include "joint_tree.h"
 
@@ -101,24 +101,40 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   if (joints == 0) return true;
   if (!tb_array_reserve((void**)&t->nodes, &t->node_capacity, bodies + joints, sizeof *t->nodes) ||
       !tb_array_reserve((void**)&t->order, &t->order_capacity, bodies + joints, sizeof *t->order) ||
-      !tb_array_reserve((void**)&t->body_scratch, &t->body_capacity, bodies, sizeof *t->body_scratch) ||
+      !tb_array_reserve((void**)&t->body_scratch, &t->body_capacity, 2 * bodies, sizeof *t->body_scratch) ||
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges))
     return false;
   float hw = TB_TREE_H_OMEGA;
   t->softness = tb_make_softness(hw * ctx->inv_h / (2.0f * 3.14159265358979f), w->joint_damping_ratio, ctx->h);
 
-  /* a spanning forest over the dynamic bodies, in step order */
-  int* uf = t->body_scratch;
-  for (int i = 0; i < bodies; ++i) uf[i] = i;
+  /* Groups of dynamic bodies linked by joints (union-find). A group whose
+   * joints close a loop, or that has a rigid row the tree cannot take, stays
+   * with Gauss-Seidel as a whole: stiff exact rows next to soft iterated ones
+   * on the same bodies fight (a 100 x 100 joint grid turned jittery). */
+  int *uf = t->body_scratch, *gs_only = t->body_scratch + bodies;
+  for (int i = 0; i < bodies; ++i) uf[i] = i, gs_only[i] = 0;
+  for (int k = 0; k < joints; ++k) {
+    const tb_joint* j = tb_joint_at(w, w->step_joints[k]);
+    if (j->skip || tb_joint_rigid_row_count(j) == 0) continue;
+    bool na = is_node_body(ctx, j->solver_a), nb = is_node_body(ctx, j->solver_b);
+    int root = find(uf, na ? j->solver_a : j->solver_b);
+    if (na && nb) {
+      int other = find(uf, j->solver_b);
+      if (other == root) {
+        gs_only[root] = 1; /* closes a loop */
+      } else {
+        int lo = root < other ? root : other, hi = root < other ? other : root;
+        uf[hi] = lo;
+        gs_only[lo] |= gs_only[hi];
+        root = lo;
+      }
+    }
+    if (!joint_fits(ctx, j)) gs_only[root] = 1;
+  }
   for (int k = 0; k < joints; ++k) {
     tb_joint* j = tb_joint_at(w, w->step_joints[k]);
     if (!joint_fits(ctx, j)) continue;
-    if (is_node_body(ctx, j->solver_a) && is_node_body(ctx, j->solver_b)) {
-      int ra = find(uf, j->solver_a), rb = find(uf, j->solver_b);
-      if (ra == rb) continue; /* closes a loop */
-      uf[ra > rb ? ra : rb] = ra > rb ? rb : ra;
-    }
-    j->in_tree = true;
+    j->in_tree = !gs_only[find(uf, is_node_body(ctx, j->solver_a) ? j->solver_a : j->solver_b)];
   }
 
   /* nodes: body nodes first (awake order), then joint nodes */

@@ -17,7 +17,7 @@ typedef struct tb_joint_tree {
   int body_nodes; /* nodes [0, body_nodes) are bodies, the rest joints */
   int* order; /* parents before children */
   int order_capacity;
-  int* body_scratch; /* per awake body: union-find parent, then its node */
+  int* body_scratch; /* per awake body: union-find parent and flag, then its node */
   int body_capacity;
   int* edges; /* per body node: its constraint nodes (CSR, first[] in body nodes) */
   int edge_capacity;
@@ -27,9 +27,9 @@ typedef struct tb_joint_tree {
 struct tb_world;
 
 void tb_joint_tree_free(tb_joint_tree* t);
-/* After the joints are prepared: picks a spanning forest of the step's joints
- * with rigid rows (a joint that would close a loop stays with Gauss-Seidel),
- * marks them in_tree and orders the nodes. false when out of memory (then no
+/* After the joints are prepared: finds the groups of jointed bodies that form
+ * trees (a group with a loop stays with Gauss-Seidel), marks their joints
+ * in_tree and orders the nodes. false when out of memory (then no
  * joint is in a tree and Gauss-Seidel solves them all). */
 bool tb_joint_tree_build(struct tb_world* w, const tb_step_context* ctx);
 /* One exact solve of every tree's rigid rows at the current positions and
