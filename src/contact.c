@@ -5,18 +5,22 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "manifold.h"
 #include "math_internal.h"
 #include "world.h"
 
 /* ---- manifold dispatch ----------------------------------------------------
  * One function per unordered pair of types, with the shape that comes first
- * in the function's name as A. A contact stores its shapes in that order. */
+ * in the function's name as A. A contact stores its shapes in that order.
+ * Each writes the manifold into the contact; polygon pairs, the bulk of a
+ * box scene, write it in place (tb_collide_polygons_into), the others copy
+ * the returned one. */
 
-typedef tb_manifold collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb);
+typedef void collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out);
 
-#define COLLIDE(name, fa, fb, call)                                                                   \
-  static tb_manifold name(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb) { \
-    return call(&a->geom.fa, xfa, &b->geom.fb, xfb);                                                  \
+#define COLLIDE(name, fa, fb, call)                                                                              \
+  static void name(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out) { \
+    *out = call(&a->geom.fa, xfa, &b->geom.fb, xfb);                                                             \
   }
 COLLIDE(circles, circle, circle, tb_collide_circles)
 COLLIDE(capsule_circle, capsule, circle, tb_collide_capsule_and_circle)
@@ -26,11 +30,14 @@ COLLIDE(segment_capsule, segment, capsule, tb_collide_segment_and_capsule)
 COLLIDE(segment_polygon, segment, polygon, tb_collide_segment_and_polygon)
 COLLIDE(polygon_circle, polygon, circle, tb_collide_polygon_and_circle)
 COLLIDE(polygon_capsule, polygon, capsule, tb_collide_polygon_and_capsule)
-COLLIDE(polygons, polygon, polygon, tb_collide_polygons)
 COLLIDE(chain_circle, chain_segment, circle, tb_collide_chain_segment_and_circle)
 COLLIDE(chain_capsule, chain_segment, capsule, tb_collide_chain_segment_and_capsule)
 COLLIDE(chain_polygon, chain_segment, polygon, tb_collide_chain_segment_and_polygon)
 #undef COLLIDE
+
+static void polygons(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out) {
+  tb_collide_polygons_into(&a->geom.polygon, xfa, &b->geom.polygon, xfb, out);
+}
 
 /* [type of A][type of B]; NULL where the pair is taken the other way round */
 static collide_fn* const collide_table[5][5] = {
@@ -244,8 +251,8 @@ static bool update_contact(tb_world* w, int i) {
     return false;
   }
   tb_manifold old = c->manifold;
-  c->manifold =
-      collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb, tb_body_at(w, sb->body)->transform);
+  collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb, tb_body_at(w, sb->body)->transform,
+                                    &c->manifold);
   carry_impulses(&old, &c->manifold);
   bool touching = c->manifold.point_count > 0;
   if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */
@@ -291,7 +298,8 @@ void tb_contacts_update(tb_world* w) {
       const tb_body* ba = tb_body_at(w, c->edges[0].body);
       const tb_body* bb = tb_body_at(w, c->edges[1].body);
       if (ba->type != TB_DYNAMIC_BODY && bb->type != TB_DYNAMIC_BODY) continue;
-      if (!tb_array_reserve((void**)&w->step_contacts, &w->step_contact_capacity, w->step_contact_count + 1,
+      if (w->step_contact_count == w->step_contact_capacity &&
+          !tb_array_reserve((void**)&w->step_contacts, &w->step_contact_capacity, w->step_contact_count + 1,
                             sizeof(int)))
         continue; /* out of memory: this contact does not push this step */
       w->step_contacts[w->step_contact_count++] = index;

@@ -23,12 +23,13 @@
  * separation and let the ball sink into what it rolls on.
  *
  * Speed: constraints are coloured so that no two of one colour share a
- * dynamic body, and each colour is solved four contacts at a time with GCC
- * vector extensions (SSE on x86-64; plain scalar code elsewhere). The lanes
- * do the same float operations in the same order as one contact alone, so
- * results are deterministic and independent of the optimiser. Contacts that
- * find no free colour are solved one by one after the coloured ones, each in
- * a block of its own. */
+ * dynamic body, and each colour is prepared and solved four contacts at a
+ * time with GCC vector extensions (SSE on x86-64; plain scalar code
+ * elsewhere), straight into the blocks the solve reads. The lanes do the same
+ * float operations in the same order as one contact alone, so results are
+ * deterministic and independent of the optimiser. Contacts that find no free
+ * colour are solved one by one after the coloured ones, each in a block of
+ * its own. */
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -47,51 +48,141 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
 
 #define TB_COLORS 24
 
-typedef struct tb_constraint_point {
-  tb_vec2 ra, rb;        /* anchors from each centre of mass, world-oriented, at step start */
-  float base_separation; /* s0, the separation at the step start */
-  float relative_velocity;
-  float normal_mass, tangent_mass;
-  float normal_impulse, tangent_impulse, max_normal_impulse;
-} tb_constraint_point;
-
-typedef struct tb_contact_constraint {
-  int a, b; /* solver bodies */
-  int contact;
-  int point_count;
-  tb_vec2 normal;
-  float friction, restitution, rolling_resistance, tangent_speed;
-  float inv_mass_a, inv_i_a, inv_mass_b, inv_i_b;
-  float rolling_mass, rolling_impulse;
-  /* both points' normal impulses solved together: K (symmetric) and its inverse */
-  float k11, k12, k22, n11, n12, n22;
-  bool block;
-  tb_softness softness;
-  tb_constraint_point points[2];
-} tb_contact_constraint;
-
-/* Four contacts of one colour, field by field. */
+/* Four contacts of one colour, field by field. A lane holds one contact
+ * constraint; a contact with one point has an inert second point (no mass,
+ * far apart) so that every lane has two. */
 typedef struct tb_wide_point {
-  tb_f4 rax, ray, rbx, rby, base_separation, normal_mass, tangent_mass;
+  tb_f4 rax, ray, rbx, rby; /* anchors from each centre of mass, world-oriented, at step start */
+  tb_f4 base_separation;    /* s0, the separation at the step start */
+  tb_f4 normal_mass, tangent_mass;
   tb_f4 normal_impulse, tangent_impulse, max_normal_impulse;
 } tb_wide_point;
 
 typedef struct tb_wide_contact {
   tb_f4 nx, ny, friction, tangent_speed, rolling_resistance, rolling_mass, rolling_impulse;
-  tb_f4 ma, ja, mb, jb;
+  tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
   tb_f4 bias_rate, mass_scale;
+  /* both points' normal impulses solved together: K (symmetric) and its inverse */
   tb_f4 k11, k12, k22, n11, n12, n22, block; /* block: 1 where both points are solved together */
   tb_wide_point p[2];
-  int32_t a[4], b[4];
-  int32_t source[4]; /* scalar constraint index, -1 for an empty lane */
-  int32_t rolling;   /* any lane with rolling resistance */
+  int32_t a[4], b[4]; /* solver bodies */
+  int32_t rolling;    /* any lane with rolling resistance */
 } tb_wide_contact;
+
+/* What a contact constraint keeps besides its lane: where the lane is, and
+ * what restitution needs after the substeps. One per step contact, in step
+ * order. */
+typedef struct tb_contact_constraint {
+  int lane; /* 4 * block + lane in the wide contacts (the colour while they are laid out) */
+  int point_count;
+  float restitution;
+  float relative_velocity[2]; /* normal speed of the points at the step start */
+} tb_contact_constraint;
 
 /* ---- scratch --------------------------------------------------------------- */
 
 static tb_contact_constraint* constraints(tb_world* w) { return (tb_contact_constraint*)w->constraints; }
 
+/* tb_solver_index of a body already at hand */
+static inline int solver_index(const tb_step_context* ctx, const tb_body* b) {
+  return b->awake_index >= 0 ? b->awake_index : ctx->static_index;
+}
+
+/* The k-th contact of the step. The step contacts lie all over the contact
+ * pool, so each pass over them asks for the one TB_PREFETCH_AHEAD further on. */
+#define TB_PREFETCH_AHEAD 8
+static inline tb_contact* step_contact(tb_world* w, int k) {
+  if (k + TB_PREFETCH_AHEAD < w->step_contact_count)
+    __builtin_prefetch(tb_pool_at(&w->contacts, w->step_contacts[k + TB_PREFETCH_AHEAD]));
+  return (tb_contact*)tb_pool_at(&w->contacts, w->step_contacts[k]);
+}
+
+/* ---- lanes ------------------------------------------------------------------ */
+
+static inline tb_f4 splat(float x) { return (tb_f4){x, x, x, x}; }
+static inline tb_f4 blend(tb_i4 mask, tb_f4 a, tb_f4 b) { return (tb_f4)(((tb_i4)a & mask) | ((tb_i4)b & ~mask)); }
+static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return blend(a > b, a, b); }
+static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return blend(a < b, a, b); }
+
+/* Four solver bodies, field by field. A solver body begins with two rows of
+ * four floats, (v.x, v.y, w, inv_mass) and (inv_inertia, da, dp.x, dp.y):
+ * four bodies' rows are loaded whole and transposed into columns, and the
+ * first rows are transposed back and stored whole (inv_mass as it was read). */
+_Static_assert(offsetof(tb_solver_body, v) == 0 && offsetof(tb_solver_body, w) == 8 &&
+                   offsetof(tb_solver_body, inv_mass) == 12 && offsetof(tb_solver_body, inv_inertia) == 16 &&
+                   offsetof(tb_solver_body, da) == 20 && offsetof(tb_solver_body, dp) == 24 &&
+                   sizeof(tb_solver_body) >= 32,
+               "the wide gather reads a solver body as two rows of four floats");
+
+typedef struct wide_body {
+  tb_f4 vx, vy, w, inv_mass;
+  tb_f4 inv_inertia, da, dpx, dpy;
+} wide_body;
+
+/* lane k of the result: lane i_k of a (0-3) or of b (4-7) */
+#if defined(__clang__) || __GNUC__ >= 12
+#define SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+#define SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (tb_i4){i0, i1, i2, i3})
+#endif
+
+/* rows <-> columns of a 4x4 matrix */
+static inline void transpose(tb_f4 m[4]) {
+  tb_f4 t0 = SHUFFLE(m[0], m[1], 0, 4, 1, 5), t1 = SHUFFLE(m[2], m[3], 0, 4, 1, 5);
+  tb_f4 t2 = SHUFFLE(m[0], m[1], 2, 6, 3, 7), t3 = SHUFFLE(m[2], m[3], 2, 6, 3, 7);
+  m[0] = SHUFFLE(t0, t1, 0, 1, 4, 5);
+  m[1] = SHUFFLE(t0, t1, 2, 3, 6, 7);
+  m[2] = SHUFFLE(t2, t3, 0, 1, 4, 5);
+  m[3] = SHUFFLE(t2, t3, 2, 3, 6, 7);
+}
+
+/* row 0 or 1 of the solver bodies idx[0..3], transposed */
+static inline void load_rows(const tb_solver_body* states, const int32_t* idx, int row, tb_f4 m[4]) {
+  memcpy(&m[0], (const float*)&states[idx[0]] + 4 * row, sizeof m[0]);
+  memcpy(&m[1], (const float*)&states[idx[1]] + 4 * row, sizeof m[1]);
+  memcpy(&m[2], (const float*)&states[idx[2]] + 4 * row, sizeof m[2]);
+  memcpy(&m[3], (const float*)&states[idx[3]] + 4 * row, sizeof m[3]);
+  transpose(m);
+}
+
+static inline wide_body gather_velocities(const tb_solver_body* states, const int32_t* idx) {
+  tb_f4 m[4];
+  load_rows(states, idx, 0, m);
+  return (wide_body){.vx = m[0], .vy = m[1], .w = m[2], .inv_mass = m[3]};
+}
+
+/* always inlined: a call would return the eight columns through memory */
+static inline __attribute__((always_inline)) wide_body gather(const tb_solver_body* states, const int32_t* idx) {
+  wide_body b = gather_velocities(states, idx);
+  tb_f4 m[4];
+  load_rows(states, idx, 1, m);
+  b.inv_inertia = m[0];
+  b.da = m[1];
+  b.dpx = m[2];
+  b.dpy = m[3];
+  return b;
+}
+
+static inline void scatter(tb_solver_body* states, const int32_t* idx, const wide_body* b) {
+  tb_f4 m[4] = {b->vx, b->vy, b->w, b->inv_mass};
+  transpose(m);
+  memcpy(&states[idx[0]], &m[0], sizeof m[0]);
+  memcpy(&states[idx[1]], &m[1], sizeof m[1]);
+  memcpy(&states[idx[2]], &m[2], sizeof m[2]);
+  memcpy(&states[idx[3]], &m[3], sizeof m[3]);
+}
+
 /* ---- prepare ------------------------------------------------------------------ */
+
+/* Four lanes of bodies or contacts, field by field. */
+#define LANES(p, field) ((tb_f4){(p)[0]->field, (p)[1]->field, (p)[2]->field, (p)[3]->field})
+#define INT_LANES(p, field) ((tb_i4){(p)[0]->field, (p)[1]->field, (p)[2]->field, (p)[3]->field})
+
+/* 1 / x where x > 0, else 0 */
+static inline tb_f4 inverse_or_zero(tb_f4 x) {
+  const tb_f4 zero = splat(0.0f);
+  return blend(x > zero, splat(1.0f) / x, zero);
+}
 
 /* The stiffness of a contact. A soft point is a damped spring k = m_n omega^2
  * (m_n its effective mass), so under a force F it sinks F / k. With one
@@ -108,256 +199,240 @@ static tb_contact_constraint* constraints(tb_world* w) { return (tb_contact_cons
  * kinematic body the base stiffness is twice as high. */
 #define TB_LOAD_COMPRESSION 0.002f
 #define TB_MAX_H_OMEGA 1.5f
-static tb_softness load_softness(const tb_step_context* ctx, bool rigid_other, const tb_contact_constraint* cc) {
-  tb_softness base = rigid_other ? ctx->static_softness : ctx->contact_softness;
-  float omega = 2.0f * 3.14159265358979f * (rigid_other ? 2.0f : 1.0f) * ctx->contact_hertz;
-  float need = omega * omega;
-  for (int p = 0; p < cc->point_count; ++p) {
-    const tb_constraint_point* cp = &cc->points[p];
-    float force = cp->normal_impulse * ctx->inv_h;
-    if (cp->normal_mass > 0.0f) need = fmaxf(need, force / (cp->normal_mass * TB_LOAD_COMPRESSION));
+#define TB_TWO_PI (2.0f * 3.14159265358979f)
+
+/* The softness of four lanes: the base one (against a rigid body or not)
+ * or, where load stiffening asks for more (need: the largest of the base
+ * omega^2 and the points' F / (m_n TB_LOAD_COMPRESSION)), a stiffer one.
+ * Few lanes are stiffened; each takes tb_make_softness. */
+static void load_softness(const tb_step_context* ctx, tb_i4 rigid_other, tb_f4 omega, tb_f4 need, tb_wide_contact* wc) {
+  wc->bias_rate = blend(rigid_other, splat(ctx->static_softness.bias_rate), splat(ctx->contact_softness.bias_rate));
+  wc->mass_scale = blend(rigid_other, splat(ctx->static_softness.mass_scale), splat(ctx->contact_softness.mass_scale));
+  for (int lane = 0; lane < 4; ++lane) {
+    if (!(need[lane] > omega[lane] * omega[lane])) continue;
+    float stiff = sqrtf(need[lane]), most = TB_MAX_H_OMEGA * ctx->inv_h;
+    if (stiff > most) stiff = most;
+    if (!(stiff > omega[lane])) continue;
+    tb_softness soft = tb_make_softness(stiff / TB_TWO_PI, ctx->contact_damping_ratio, ctx->h);
+    wc->bias_rate[lane] = soft.bias_rate;
+    wc->mass_scale[lane] = soft.mass_scale;
   }
-  if (!(need > omega * omega)) return base;
-  float stiff = fminf(sqrtf(need), TB_MAX_H_OMEGA * ctx->inv_h);
-  if (!(stiff > omega)) return base;
-  return tb_make_softness(stiff / (2.0f * 3.14159265358979f), ctx->contact_damping_ratio, ctx->h);
 }
 
-/* The 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
- * and its inverse. Like Box2D 2.4, points so close together that K is near
- * singular (condition number over ~1000) are solved one after the other. */
-static void block_terms(tb_contact_constraint* cc, float ma, float mb, float ja, float jb) {
-  cc->block = false;
-  cc->k11 = cc->k12 = cc->k22 = cc->n11 = cc->n12 = cc->n22 = 0.0f;
-  tb_vec2 n = cc->normal;
-  const tb_constraint_point *p1 = &cc->points[0], *p2 = &cc->points[1];
-  float r1a = tb_cross(p1->ra, n), r1b = tb_cross(p1->rb, n);
-  float r2a = tb_cross(p2->ra, n), r2b = tb_cross(p2->rb, n);
-  if (cc->point_count >= 1) cc->k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
-  if (cc->point_count < 2) return;
-  cc->k22 = ma + mb + ja * r2a * r2a + jb * r2b * r2b;
-  cc->k12 = ma + mb + ja * r1a * r2a + jb * r1b * r2b;
-  float det = cc->k11 * cc->k22 - cc->k12 * cc->k12;
-  if (!(cc->k11 * cc->k11 < 1000.0f * det)) return;
-  float inv = 1.0f / det;
-  cc->block = true;
-  cc->n11 = inv * cc->k22;
-  cc->n12 = -inv * cc->k12;
-  cc->n22 = inv * cc->k11;
-}
-
-static void prepare_one(tb_world* w, const tb_step_context* ctx, int index, tb_contact_constraint* cc) {
-  const tb_solver_body* states = ctx->states;
-  const tb_contact* c = (const tb_contact*)tb_pool_at(&w->contacts, index);
-  const tb_body* ba = tb_body_at(w, c->edges[0].body);
-  const tb_body* bb = tb_body_at(w, c->edges[1].body);
-  int ia = tb_solver_index(w, c->edges[0].body), ib = tb_solver_index(w, c->edges[1].body);
-  const tb_solver_body* sa = &states[ia];
-  const tb_solver_body* sb = &states[ib];
-  float ma = sa->inv_mass, mb = sb->inv_mass, ja = sa->inv_inertia, jb = sb->inv_inertia;
-  cc->a = ia;
-  cc->b = ib;
-  cc->contact = index;
-  cc->normal = c->manifold.normal;
-  cc->friction = c->friction;
-  cc->restitution = c->restitution;
-  cc->rolling_resistance = c->rolling_resistance;
-  cc->tangent_speed = c->tangent_speed;
-  cc->inv_mass_a = ma;
-  cc->inv_i_a = ja;
-  cc->inv_mass_b = mb;
-  cc->inv_i_b = jb;
-  cc->rolling_mass = ja + jb > 0.0f ? 1.0f / (ja + jb) : 0.0f;
-  cc->rolling_impulse = ctx->enable_warm_starting ? c->rolling_impulse : 0.0f;
-  bool rigid_other = ba->type != TB_DYNAMIC_BODY || bb->type != TB_DYNAMIC_BODY;
-  cc->point_count = c->manifold.point_count;
-  tb_vec2 n = cc->normal;
-  tb_vec2 t = tb_right_perp(n);
+/* Prepares the constraints of one block's contacts, four lanes at a time
+ * (the same float operations for each lane as for one contact alone).
+ * k[lane] is the step contact of a lane, -1 for an unused one (cleared
+ * afterwards). */
+static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t* k, tb_wide_contact* wc) {
+  static const tb_contact no_contact;
+  static const tb_body no_body;
+  const tb_contact* c[4];
+  const tb_body *ba[4], *bb[4];
+  for (int lane = 0; lane < 4; ++lane) {
+    c[lane] = k[lane] >= 0 ? (const tb_contact*)tb_pool_at(&w->contacts, w->step_contacts[k[lane]]) : &no_contact;
+    ba[lane] = k[lane] >= 0 ? tb_body_at(w, c[lane]->edges[0].body) : &no_body;
+    bb[lane] = k[lane] >= 0 ? tb_body_at(w, c[lane]->edges[1].body) : &no_body;
+    wc->a[lane] = k[lane] >= 0 ? solver_index(ctx, ba[lane]) : ctx->static_index;
+    wc->b[lane] = k[lane] >= 0 ? solver_index(ctx, bb[lane]) : ctx->static_index;
+  }
+  const tb_f4 zero = splat(0.0f), one = splat(1.0f);
+  wide_body A = gather(ctx->states, wc->a), B = gather(ctx->states, wc->b);
+  tb_f4 ma = A.inv_mass, mb = B.inv_mass, ja = A.inv_inertia, jb = B.inv_inertia;
+  tb_f4 nx = LANES(c, manifold.normal.x), ny = LANES(c, manifold.normal.y);
+  tb_f4 tx = ny, ty = -nx; /* tb_right_perp(n) */
+  tb_i4 point_count = INT_LANES(c, manifold.point_count);
+  tb_f4 rolling_resistance = LANES(c, rolling_resistance);
+  wc->nx = nx;
+  wc->ny = ny;
+  wc->friction = LANES(c, friction);
+  wc->tangent_speed = LANES(c, tangent_speed);
+  wc->rolling_resistance = rolling_resistance;
+  wc->rolling_mass = inverse_or_zero(ja + jb);
+  wc->rolling_impulse = ctx->enable_warm_starting ? LANES(c, rolling_impulse) : zero;
+  wc->rolling = (rolling_resistance[0] > 0.0f) | (rolling_resistance[1] > 0.0f) | (rolling_resistance[2] > 0.0f) |
+                (rolling_resistance[3] > 0.0f);
+  wc->ma = ma;
+  wc->ja = ja;
+  wc->mb = mb;
+  wc->jb = jb;
+  tb_f4 cax = LANES(ba, center.x), cay = LANES(ba, center.y), cbx = LANES(bb, center.x), cby = LANES(bb, center.y);
+  const tb_i4 dynamic = {TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY};
+  tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
+  tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI * 2.0f * ctx->contact_hertz), splat(TB_TWO_PI * ctx->contact_hertz));
+  tb_f4 need = omega * omega;
+  tb_f4 rn[2][2];    /* r x n of each point at A and B, for the block terms */
+  tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
-    tb_constraint_point* cp = &cc->points[p];
-    if (p >= cc->point_count) { /* an inert second point, so every contact has two */
-      memset(cp, 0, sizeof *cp);
-      cp->base_separation = 1.0f;
-      continue;
-    }
-    const tb_manifold_point* mp = &c->manifold.points[p];
-    cp->ra = tb_sub(mp->point, ba->center);
-    cp->rb = tb_sub(mp->point, bb->center);
-    cp->base_separation = mp->separation;
-    float rna = tb_cross(cp->ra, n), rnb = tb_cross(cp->rb, n);
-    float kn = ma + mb + ja * rna * rna + jb * rnb * rnb;
-    cp->normal_mass = kn > 0.0f ? 1.0f / kn : 0.0f;
-    float rta = tb_cross(cp->ra, t), rtb = tb_cross(cp->rb, t);
-    float kt = ma + mb + ja * rta * rta + jb * rtb * rtb;
-    cp->tangent_mass = kt > 0.0f ? 1.0f / kt : 0.0f;
-    tb_vec2 va = tb_add(sa->v, tb_cross_sv(sa->w, cp->ra));
-    tb_vec2 vb = tb_add(sb->v, tb_cross_sv(sb->w, cp->rb));
-    cp->relative_velocity = tb_dot(n, tb_sub(vb, va));
-    cp->normal_impulse = ctx->enable_warm_starting ? mp->normal_impulse : 0.0f;
-    cp->tangent_impulse = ctx->enable_warm_starting ? mp->tangent_impulse : 0.0f;
-    cp->max_normal_impulse = 0.0f;
+    tb_wide_point* wp = &wc->p[p];
+    tb_i4 used = point_count > (tb_i4){p, p, p, p};
+    /* ra = point - centre of A, rb likewise; r x n and r x t (tb_cross) */
+    tb_f4 rax = LANES(c, manifold.points[p].point.x) - cax, ray = LANES(c, manifold.points[p].point.y) - cay;
+    tb_f4 rbx = LANES(c, manifold.points[p].point.x) - cbx, rby = LANES(c, manifold.points[p].point.y) - cby;
+    tb_f4 rna = rax * ny - ray * nx, rnb = rbx * ny - rby * nx;
+    tb_f4 rta = rax * ty - ray * tx, rtb = rbx * ty - rby * tx;
+    tb_f4 normal_mass = inverse_or_zero(ma + mb + ja * rna * rna + jb * rnb * rnb);
+    tb_f4 tangent_mass = inverse_or_zero(ma + mb + ja * rta * rta + jb * rtb * rtb);
+    tb_f4 normal_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].normal_impulse) : zero;
+    tb_f4 tangent_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].tangent_impulse) : zero;
+    wp->rax = blend(used, rax, zero);
+    wp->ray = blend(used, ray, zero);
+    wp->rbx = blend(used, rbx, zero);
+    wp->rby = blend(used, rby, zero);
+    rn[p][0] = blend(used, rna, zero);
+    rn[p][1] = blend(used, rnb, zero);
+    wp->base_separation = blend(used, LANES(c, manifold.points[p].separation), one);
+    wp->normal_mass = blend(used, normal_mass, zero);
+    wp->tangent_mass = blend(used, tangent_mass, zero);
+    wp->normal_impulse = blend(used, normal_impulse, zero);
+    wp->tangent_impulse = blend(used, tangent_impulse, zero);
+    wp->max_normal_impulse = zero;
+    /* (v_B + w_B x rb - v_A - w_A x ra) . n */
+    tb_f4 vax = A.vx + -A.w * ray, vay = A.vy + A.w * rax;
+    tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
+    approach[p] = blend(used, nx * (vbx - vax) + ny * (vby - vay), zero);
+    /* the load stiffening's need, point by point */
+    tb_f4 point_need = (normal_impulse * splat(ctx->inv_h)) / (normal_mass * splat(TB_LOAD_COMPRESSION));
+    need = blend(used & (normal_mass > zero) & (point_need > need), point_need, need);
   }
-  block_terms(cc, ma, mb, ja, jb);
-  cc->softness = load_softness(ctx, rigid_other, cc);
+  /* the 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
+   * and its inverse. Like Box2D 2.4, points so close together that K is near
+   * singular (condition number over ~1000) are solved one after the other. */
+  tb_f4 r1a = rn[0][0], r1b = rn[0][1], r2a = rn[1][0], r2b = rn[1][1];
+  tb_i4 two = point_count >= (tb_i4){2, 2, 2, 2};
+  tb_f4 k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
+  tb_f4 k22 = blend(two, ma + mb + ja * r2a * r2a + jb * r2b * r2b, zero);
+  tb_f4 k12 = blend(two, ma + mb + ja * r1a * r2a + jb * r1b * r2b, zero);
+  tb_f4 det = k11 * k22 - k12 * k12;
+  tb_i4 block = two & (k11 * k11 < splat(1000.0f) * det);
+  tb_f4 inv = one / det;
+  wc->k11 = k11;
+  wc->k12 = k12;
+  wc->k22 = k22;
+  wc->n11 = blend(block, inv * k22, zero);
+  wc->n12 = blend(block, -inv * k12, zero);
+  wc->n22 = blend(block, inv * k11, zero);
+  wc->block = blend(block, one, zero);
+  load_softness(ctx, rigid_other, omega, need, wc);
+  for (int lane = 0; lane < 4; ++lane) {
+    if (k[lane] < 0) continue;
+    tb_contact_constraint* cc = &constraints(w)[k[lane]];
+    cc->point_count = point_count[lane];
+    cc->restitution = c[lane]->restitution;
+    cc->relative_velocity[0] = approach[0][lane];
+    cc->relative_velocity[1] = approach[1][lane];
+  }
 }
 
-/* Greedy colouring: the first colour that neither dynamic body uses. Bodies
- * that never move under impulses (static, kinematic) are shared freely: their
- * velocity is written back unchanged. */
-static void color_constraints(tb_world* w, const tb_step_context* ctx, int* color_of, int* color_count) {
+/* An unused lane: both points inert, both bodies the static dummy. */
+static void clear_lane(tb_wide_contact* wc, int lane, int static_index) {
+  tb_f4* fields = (tb_f4*)wc;
+  for (size_t f = 0; f < offsetof(tb_wide_contact, a) / sizeof(tb_f4); ++f) fields[f][lane] = 0.0f;
+  wc->p[0].base_separation[lane] = wc->p[1].base_separation[lane] = 1.0f;
+  wc->a[lane] = wc->b[lane] = static_index;
+}
+
+/* Greedy colouring: the first colour that neither dynamic body uses, left in
+ * each constraint's lane field. Bodies that never move under impulses
+ * (static, kinematic) are shared freely: their velocity is written back
+ * unchanged. */
+static void color_constraints(tb_world* w, const tb_step_context* ctx, int* color_count) {
   uint32_t* bits = (uint32_t*)w->scratch;
   memset(bits, 0, (size_t)(ctx->static_index + 1) * sizeof(uint32_t));
   memset(color_count, 0, (TB_COLORS + 1) * sizeof(int));
-  const tb_contact_constraint* cs = constraints(w);
+  tb_contact_constraint* cs = constraints(w);
   for (int k = 0; k < w->step_contact_count; ++k) {
-    const tb_contact_constraint* cc = &cs[k];
-    bool da = cc->inv_mass_a > 0.0f, db = cc->inv_mass_b > 0.0f;
-    uint32_t used = (da ? bits[cc->a] : 0u) | (db ? bits[cc->b] : 0u);
+    const tb_contact* c = step_contact(w, k);
+    int a = solver_index(ctx, tb_body_at(w, c->edges[0].body));
+    int b = solver_index(ctx, tb_body_at(w, c->edges[1].body));
+    bool da = ctx->states[a].inv_mass > 0.0f, db = ctx->states[b].inv_mass > 0.0f;
+    uint32_t used = (da ? bits[a] : 0u) | (db ? bits[b] : 0u);
     int color = TB_COLORS; /* overflow */
     if (~used & ((1u << TB_COLORS) - 1u)) {
       color = __builtin_ctz(~used);
-      if (da) bits[cc->a] |= 1u << color;
-      if (db) bits[cc->b] |= 1u << color;
+      if (da) bits[a] |= 1u << color;
+      if (db) bits[b] |= 1u << color;
     }
-    color_of[k] = color;
+    cs[k].lane = color;
     color_count[color] += 1;
   }
 }
 
-static void fill_lane(tb_wide_contact* wc, int lane, const tb_contact_constraint* cc, int source) {
-  wc->nx[lane] = cc->normal.x;
-  wc->ny[lane] = cc->normal.y;
-  wc->friction[lane] = cc->friction;
-  wc->tangent_speed[lane] = cc->tangent_speed;
-  wc->rolling_resistance[lane] = cc->rolling_resistance;
-  wc->rolling_mass[lane] = cc->rolling_mass;
-  wc->rolling_impulse[lane] = cc->rolling_impulse;
-  wc->ma[lane] = cc->inv_mass_a;
-  wc->ja[lane] = cc->inv_i_a;
-  wc->mb[lane] = cc->inv_mass_b;
-  wc->jb[lane] = cc->inv_i_b;
-  wc->bias_rate[lane] = cc->softness.bias_rate;
-  wc->mass_scale[lane] = cc->softness.mass_scale;
-  wc->k11[lane] = cc->k11;
-  wc->k12[lane] = cc->k12;
-  wc->k22[lane] = cc->k22;
-  wc->n11[lane] = cc->n11;
-  wc->n12[lane] = cc->n12;
-  wc->n22[lane] = cc->n22;
-  wc->block[lane] = cc->block ? 1.0f : 0.0f;
-  for (int p = 0; p < 2; ++p) {
-    const tb_constraint_point* cp = &cc->points[p];
-    tb_wide_point* wp = &wc->p[p];
-    wp->rax[lane] = cp->ra.x;
-    wp->ray[lane] = cp->ra.y;
-    wp->rbx[lane] = cp->rb.x;
-    wp->rby[lane] = cp->rb.y;
-    wp->base_separation[lane] = cp->base_separation;
-    wp->normal_mass[lane] = cp->normal_mass;
-    wp->tangent_mass[lane] = cp->tangent_mass;
-    wp->normal_impulse[lane] = cp->normal_impulse;
-    wp->tangent_impulse[lane] = cp->tangent_impulse;
-    wp->max_normal_impulse[lane] = cp->max_normal_impulse;
-  }
-  wc->a[lane] = cc->a;
-  wc->b[lane] = cc->b;
-  wc->source[lane] = source;
-  if (cc->rolling_resistance > 0.0f) wc->rolling = 1;
-}
-
 bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int count = w->step_contact_count;
-  int n = ctx->static_index + 1;
-  /* scalar constraints; colour bits per solver body and the colour of each
-   * constraint in the int scratch */
   if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
-      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, n + count + 1, sizeof(int)))
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1, sizeof(int)))
     return false;
-  tb_contact_constraint* cs = constraints(w);
-  for (int k = 0; k < count; ++k) prepare_one(w, ctx, w->step_contacts[k], &cs[k]);
-
-  int* color_of = w->scratch + n;
   int color_count[TB_COLORS + 1];
-  color_constraints(w, ctx, color_of, color_count);
+  color_constraints(w, ctx, color_count);
 
   /* Blocks of four per colour, in constraint order (deterministic), then one
    * block per contact that found no colour (one live lane each, solved one
    * after the other). */
-  int block_start[TB_COLORS + 1];
+  int next_lane[TB_COLORS + 1];
   int blocks = 0;
   for (int c = 0; c < TB_COLORS; ++c) {
-    block_start[c] = blocks;
+    next_lane[c] = 4 * blocks;
     blocks += (color_count[c] + 3) / 4;
   }
-  block_start[TB_COLORS] = blocks;
+  next_lane[TB_COLORS] = 4 * blocks;
   blocks += color_count[TB_COLORS];
-  if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, sizeof(tb_wide_contact))) return false;
+  /* the step contact of each lane (-1: unused) in the int scratch, where the
+   * colour bits were */
+  if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, sizeof(tb_wide_contact)) ||
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, 4 * blocks + 1, sizeof(int)))
+    return false;
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   w->wide_count = blocks;
-  const tb_contact_constraint empty = {.a = ctx->static_index,
-                                       .b = ctx->static_index,
-                                       .point_count = 0,
-                                       .points = {{.base_separation = 1.0f}, {.base_separation = 1.0f}}};
-  for (int b = 0; b < blocks; ++b) {
-    wide[b].rolling = 0;
-    for (int lane = 0; lane < 4; ++lane) fill_lane(&wide[b], lane, &empty, -1);
-  }
-  int filled[TB_COLORS + 1];
-  memset(filled, 0, sizeof filled);
+  int32_t* lane_contact = w->scratch;
+  memset(lane_contact, 0xff, (size_t)(4 * blocks) * sizeof *lane_contact);
+  tb_contact_constraint* cs = constraints(w);
   for (int k = 0; k < count; ++k) {
-    int c = color_of[k];
-    int slot = filled[c]++;
-    if (c == TB_COLORS)
-      fill_lane(&wide[block_start[c] + slot], 0, &cs[k], k);
-    else
-      fill_lane(&wide[block_start[c] + slot / 4], slot % 4, &cs[k], k);
+    int color = cs[k].lane;
+    int lane = next_lane[color];
+    next_lane[color] += color == TB_COLORS ? 4 : 1;
+    cs[k].lane = lane;
+    lane_contact[lane] = k;
+  }
+  for (int b = 0; b < blocks; ++b) {
+    const int32_t* k = &lane_contact[4 * b];
+    if (b + 1 < blocks) /* the next block's contacts, ahead of their turn */
+      for (int lane = 0; lane < 4; ++lane)
+        if (k[4 + lane] >= 0) __builtin_prefetch(tb_pool_at(&w->contacts, w->step_contacts[k[4 + lane]]));
+    prepare_block(w, ctx, k, &wide[b]);
+    for (int lane = 0; lane < 4; ++lane)
+      if (k[lane] < 0) clear_lane(&wide[b], lane, ctx->static_index);
   }
   return true;
 }
 
 /* ---- wide solve ------------------------------------------------------------ */
 
-static inline tb_f4 splat(float x) { return (tb_f4){x, x, x, x}; }
-static inline tb_f4 blend(tb_i4 mask, tb_f4 a, tb_f4 b) { return (tb_f4)(((tb_i4)a & mask) | ((tb_i4)b & ~mask)); }
-static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return blend(a > b, a, b); }
-static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return blend(a < b, a, b); }
-
-typedef struct wide_body {
-  tb_f4 vx, vy, w, dpx, dpy, da;
-} wide_body;
-
-static inline wide_body gather(const tb_solver_body* states, const int32_t* idx) {
-  const tb_solver_body *s0 = &states[idx[0]], *s1 = &states[idx[1]], *s2 = &states[idx[2]], *s3 = &states[idx[3]];
-  return (wide_body){{s0->v.x, s1->v.x, s2->v.x, s3->v.x},
-                     {s0->v.y, s1->v.y, s2->v.y, s3->v.y},
-                     {s0->w, s1->w, s2->w, s3->w},
-                     {s0->dp.x, s1->dp.x, s2->dp.x, s3->dp.x},
-                     {s0->dp.y, s1->dp.y, s2->dp.y, s3->dp.y},
-                     {s0->da, s1->da, s2->da, s3->da}};
+/* An impulse P at each anchor of one point: -P on A, +P on B. */
+static inline void apply_impulse(const tb_wide_contact* c, const tb_wide_point* cp, tb_f4 Px, tb_f4 Py, wide_body* A,
+                                 wide_body* B) {
+  A->vx -= c->ma * Px;
+  A->vy -= c->ma * Py;
+  A->w -= c->ja * (cp->rax * Py - cp->ray * Px);
+  B->vx += c->mb * Px;
+  B->vy += c->mb * Py;
+  B->w += c->jb * (cp->rbx * Py - cp->rby * Px);
 }
 
-static inline void scatter(tb_solver_body* states, const int32_t* idx, const wide_body* b) {
-  for (int lane = 0; lane < 4; ++lane) {
-    tb_solver_body* s = &states[idx[lane]];
-    s->v.x = b->vx[lane];
-    s->v.y = b->vy[lane];
-    s->w = b->w[lane];
-  }
+/* (v_B + w_B x r_B) - (v_A + w_A x r_A) at one point */
+static inline void relative_velocity(const tb_wide_point* cp, const wide_body* A, const wide_body* B, tb_f4* dvx,
+                                     tb_f4* dvy) {
+  *dvx = (B->vx + -B->w * cp->rby) - (A->vx + -A->w * cp->ray);
+  *dvy = (B->vy + B->w * cp->rbx) - (A->vy + A->w * cp->rax);
 }
 
 static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
-  wide_body A = gather(states, c->a), B = gather(states, c->b);
+  wide_body A = gather_velocities(states, c->a), B = gather_velocities(states, c->b);
   tb_f4 tx = c->ny, ty = -c->nx;
   for (int p = 0; p < 2; ++p) {
     const tb_wide_point* cp = &c->p[p];
     tb_f4 Px = cp->normal_impulse * c->nx + cp->tangent_impulse * tx;
     tb_f4 Py = cp->normal_impulse * c->ny + cp->tangent_impulse * ty;
-    A.w -= c->ja * (cp->rax * Py - cp->ray * Px);
-    A.vx -= c->ma * Px;
-    A.vy -= c->ma * Py;
-    B.w += c->jb * (cp->rbx * Py - cp->rby * Px);
-    B.vx += c->mb * Px;
-    B.vy += c->mb * Py;
+    apply_impulse(c, cp, Px, Py, &A, &B);
   }
   A.w -= c->ja * c->rolling_impulse;
   B.w += c->jb * c->rolling_impulse;
@@ -365,95 +440,96 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
   scatter(states, c->b, &B);
 }
 
-static void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h, float push, bool use_bias) {
-  wide_body A = gather(states, c->a), B = gather(states, c->b);
+/* The soft terms of one point's normal impulse: its mass scale, and
+ * r = v_n + bias, with the separation s predicted from the bodies' motion. */
+static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
+                                  const wide_body* B, float inv_h, float push, bool use_bias, tb_f4* mass_scale) {
   const tb_f4 zero = splat(0.0f), one = splat(1.0f);
-  tb_f4 dpx = B.dpx - A.dpx, dpy = B.dpy - A.dpy;
+  /* da x r = (-da r.y, da r.x), as tb_cross_sv */
+  tb_f4 prax = -A->da * cp->ray, pray = A->da * cp->rax;
+  tb_f4 prbx = -B->da * cp->rby, prby = B->da * cp->rbx;
+  tb_f4 dpx = B->dpx - A->dpx, dpy = B->dpy - A->dpy;
+  tb_f4 s = (dpx + (prbx - prax)) * c->nx + (dpy + (prby - pray)) * c->ny + cp->base_separation;
+  tb_i4 speculative = s > zero;
+  tb_f4 bias;
+  if (use_bias) {
+    bias = blend(speculative, s * inv_h, max4(c->bias_rate * s, splat(-push)));
+    *mass_scale = blend(speculative, one, c->mass_scale);
+  } else {
+    bias = blend(speculative, s * inv_h, zero);
+    *mass_scale = one;
+  }
+  tb_f4 dvx, dvy;
+  relative_velocity(cp, A, B, &dvx, &dvy);
+  return dvx * c->nx + dvy * c->ny + bias;
+}
+
+/* Friction at one point: the tangent impulse, clamped by mu times the
+ * point's normal impulse, towards the surfaces' tangent speed. */
+static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, wide_body* A, wide_body* B) {
+  tb_f4 tx = c->ny, ty = -c->nx;
+  tb_f4 dvx, dvy;
+  relative_velocity(cp, A, B, &dvx, &dvy);
+  tb_f4 vt = dvx * tx + dvy * ty;
+  tb_f4 impulse = -cp->tangent_mass * (vt - c->tangent_speed);
+  tb_f4 limit = c->friction * cp->normal_impulse;
+  tb_f4 total = min4(max4(cp->tangent_impulse + impulse, -limit), limit);
+  impulse = total - cp->tangent_impulse;
+  cp->tangent_impulse = total;
+  apply_impulse(c, cp, impulse * tx, impulse * ty, A, B);
+}
+
+/* Always inlined: the biased and the relax pass each get a copy without the
+ * other's branches. */
+static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h,
+                                                             float push, bool use_bias) {
+  wide_body A = gather(states, c->a), B = gather(states, c->b);
+  const tb_f4 zero = splat(0.0f);
+  tb_wide_point *p1 = &c->p[0], *p2 = &c->p[1];
   /* Per point: the soft terms and r = v0 + bias, where v0 is the normal speed
    * the point would have without its accumulated impulse a (v0 = v_n - K a).
    * Since mass_scale + impulse_scale = 1, the soft update of one point,
    * a - m_n mass_scale (v_n + bias) - impulse_scale a, is the same as
    * x = -mass_scale m_n r: a new total that does not depend on a. */
-  tb_f4 r[2], ms[2], a[2];
-  for (int p = 0; p < 2; ++p) {
-    tb_wide_point* cp = &c->p[p];
-    /* da x r = (-da r.y, da r.x), as tb_cross_sv */
-    tb_f4 prax = -A.da * cp->ray, pray = A.da * cp->rax;
-    tb_f4 prbx = -B.da * cp->rby, prby = B.da * cp->rbx;
-    tb_f4 s = (dpx + (prbx - prax)) * c->nx + (dpy + (prby - pray)) * c->ny + cp->base_separation;
-    tb_i4 speculative = s > zero;
-    tb_f4 bias;
-    if (use_bias) {
-      bias = blend(speculative, s * inv_h, max4(c->bias_rate * s, splat(-push)));
-      ms[p] = blend(speculative, one, c->mass_scale);
-    } else {
-      bias = blend(speculative, s * inv_h, zero);
-      ms[p] = one;
-    }
-    tb_f4 dvx = (B.vx + -B.w * cp->rby) - (A.vx + -A.w * cp->ray);
-    tb_f4 dvy = (B.vy + B.w * cp->rbx) - (A.vy + A.w * cp->rax);
-    r[p] = dvx * c->nx + dvy * c->ny + bias;
-    a[p] = cp->normal_impulse;
-  }
+  tb_f4 ms1, ms2;
+  tb_f4 t1 = normal_target(c, p1, &A, &B, inv_h, push, use_bias, &ms1);
+  tb_f4 t2 = normal_target(c, p2, &A, &B, inv_h, push, use_bias, &ms2);
+  tb_f4 a1 = p1->normal_impulse, a2 = p2->normal_impulse;
   /* Both points at once (Box2D 2.4's block solver for the mixed LCP
    * x >= 0, K x + r0 >= 0, complementary; here scaled by mass_scale): the
    * first case that holds wins: both push; only 1; only 2; neither. Lanes
    * with one point (or a near-singular K) take the one-point case. */
   tb_i4 two = c->block > zero;
-  tb_f4 r1 = r[0] - c->k11 * a[0] - c->k12 * a[1]; /* v0_1 + bias_1 */
-  tb_f4 r2 = r[1] - c->k12 * a[0] - c->k22 * a[1];
-  tb_f4 x1 = a[0], x2 = a[1]; /* no case holds (round-off): keep the impulses */
+  tb_f4 r1 = t1 - c->k11 * a1 - c->k12 * a2; /* v0_1 + bias_1 */
+  tb_f4 r2 = t2 - c->k12 * a1 - c->k22 * a2;
+  tb_f4 x1 = a1, x2 = a2; /* no case holds (round-off): keep the impulses */
   tb_i4 none = (r1 >= zero) & (~two | (r2 >= zero));
   x1 = blend(none, zero, x1);
   x2 = blend(none, zero, x2);
-  tb_f4 only2 = -ms[1] * c->p[1].normal_mass * r2;
+  tb_f4 only2 = -ms2 * p2->normal_mass * r2;
   tb_i4 second = two & (only2 >= zero) & (r1 + c->k12 * only2 >= zero);
   x1 = blend(second, zero, x1);
   x2 = blend(second, only2, x2);
-  tb_f4 only1 = -ms[0] * c->p[0].normal_mass * r1;
+  tb_f4 only1 = -ms1 * p1->normal_mass * r1;
   tb_i4 first = (only1 >= zero) & (~two | (r2 + c->k12 * only1 >= zero));
   x1 = blend(first, only1, x1);
   x2 = blend(first, zero, x2);
-  tb_f4 both1 = -ms[0] * (c->n11 * r1 + c->n12 * r2), both2 = -ms[1] * (c->n12 * r1 + c->n22 * r2);
+  tb_f4 both1 = -ms1 * (c->n11 * r1 + c->n12 * r2), both2 = -ms2 * (c->n12 * r1 + c->n22 * r2);
   tb_i4 both = two & (both1 >= zero) & (both2 >= zero);
   x1 = blend(both, both1, x1);
   x2 = blend(both, both2, x2);
-  tb_f4 total_normal = x1 + x2;
-  tb_f4 x[2] = {x1, x2};
-  for (int p = 0; p < 2; ++p) {
-    tb_wide_point* cp = &c->p[p];
-    tb_f4 impulse = x[p] - a[p];
-    cp->normal_impulse = x[p];
-    cp->max_normal_impulse = max4(cp->max_normal_impulse, x[p]);
-    tb_f4 Px = impulse * c->nx, Py = impulse * c->ny;
-    A.vx -= c->ma * Px;
-    A.vy -= c->ma * Py;
-    A.w -= c->ja * (cp->rax * Py - cp->ray * Px);
-    B.vx += c->mb * Px;
-    B.vy += c->mb * Py;
-    B.w += c->jb * (cp->rbx * Py - cp->rby * Px);
-  }
-  tb_f4 tx = c->ny, ty = -c->nx;
-  for (int p = 0; p < 2; ++p) {
-    tb_wide_point* cp = &c->p[p];
-    tb_f4 dvx = (B.vx + -B.w * cp->rby) - (A.vx + -A.w * cp->ray);
-    tb_f4 dvy = (B.vy + B.w * cp->rbx) - (A.vy + A.w * cp->rax);
-    tb_f4 vt = dvx * tx + dvy * ty;
-    tb_f4 impulse = -cp->tangent_mass * (vt - c->tangent_speed);
-    tb_f4 limit = c->friction * cp->normal_impulse;
-    tb_f4 total = min4(max4(cp->tangent_impulse + impulse, -limit), limit);
-    impulse = total - cp->tangent_impulse;
-    cp->tangent_impulse = total;
-    tb_f4 Px = impulse * tx, Py = impulse * ty;
-    A.vx -= c->ma * Px;
-    A.vy -= c->ma * Py;
-    A.w -= c->ja * (cp->rax * Py - cp->ray * Px);
-    B.vx += c->mb * Px;
-    B.vy += c->mb * Py;
-    B.w += c->jb * (cp->rbx * Py - cp->rby * Px);
-  }
+  p1->normal_impulse = x1;
+  p1->max_normal_impulse = max4(p1->max_normal_impulse, x1);
+  tb_f4 d1 = x1 - a1;
+  apply_impulse(c, p1, d1 * c->nx, d1 * c->ny, &A, &B);
+  p2->normal_impulse = x2;
+  p2->max_normal_impulse = max4(p2->max_normal_impulse, x2);
+  tb_f4 d2 = x2 - a2;
+  apply_impulse(c, p2, d2 * c->nx, d2 * c->ny, &A, &B);
+  solve_friction(c, p1, &A, &B);
+  solve_friction(c, p2, &A, &B);
   if (c->rolling) {
-    tb_f4 limit = c->rolling_resistance * total_normal;
+    tb_f4 limit = c->rolling_resistance * (x1 + x2);
     tb_f4 impulse = -c->rolling_mass * (B.w - A.w);
     tb_f4 total = min4(max4(c->rolling_impulse + impulse, -limit), limit);
     impulse = total - c->rolling_impulse;
@@ -486,33 +562,41 @@ void tb_contact_solver_reset(tb_world* w) {
 
 void tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
-  for (int b = 0; b < w->wide_count; ++b)
-    solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, use_bias);
+  /* one loop per pass kind, each with solve_wide specialised for it */
+  if (use_bias)
+    for (int b = 0; b < w->wide_count; ++b)
+      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true);
+  else
+    for (int b = 0; b < w->wide_count; ++b)
+      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false);
 }
 
 /* Newton's restitution on the points that approached faster than the
  * threshold and pushed during the step: v_n' = -e v_n(before). */
 #define TB_RESTITUTION_PASSES 8
-static void apply_restitution(tb_contact_constraint* cc, tb_solver_body* states, float threshold) {
-  tb_solver_body* sa = &states[cc->a];
-  tb_solver_body* sb = &states[cc->b];
+static void apply_restitution(const tb_contact_constraint* cc, tb_wide_contact* wc, tb_solver_body* states,
+                              float threshold) {
+  int lane = cc->lane % 4;
+  tb_solver_body* sa = &states[wc->a[lane]];
+  tb_solver_body* sb = &states[wc->b[lane]];
   tb_vec2 va = sa->v, vb = sb->v;
   float wa = sa->w, wb = sb->w;
-  tb_vec2 n = cc->normal;
+  tb_vec2 n = {wc->nx[lane], wc->ny[lane]};
   for (int p = 0; p < cc->point_count; ++p) {
-    tb_constraint_point* cp = &cc->points[p];
-    if (cp->relative_velocity > -threshold || cp->max_normal_impulse == 0.0f) continue;
-    tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, cp->rb)), tb_add(va, tb_cross_sv(wa, cp->ra)));
+    tb_wide_point* cp = &wc->p[p];
+    if (cc->relative_velocity[p] > -threshold || cp->max_normal_impulse[lane] == 0.0f) continue;
+    tb_vec2 ra = {cp->rax[lane], cp->ray[lane]}, rb = {cp->rbx[lane], cp->rby[lane]};
+    tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, rb)), tb_add(va, tb_cross_sv(wa, ra)));
     float vn = tb_dot(dv, n);
-    float impulse = -cp->normal_mass * (vn + cc->restitution * cp->relative_velocity);
-    float total = fmaxf(cp->normal_impulse + impulse, 0.0f);
-    impulse = total - cp->normal_impulse;
-    cp->normal_impulse = total;
+    float impulse = -cp->normal_mass[lane] * (vn + cc->restitution * cc->relative_velocity[p]);
+    float total = fmaxf(cp->normal_impulse[lane] + impulse, 0.0f);
+    impulse = total - cp->normal_impulse[lane];
+    cp->normal_impulse[lane] = total;
     tb_vec2 P = tb_scale(impulse, n);
-    va = tb_mul_add(va, -cc->inv_mass_a, P);
-    wa -= cc->inv_i_a * tb_cross(cp->ra, P);
-    vb = tb_mul_add(vb, cc->inv_mass_b, P);
-    wb += cc->inv_i_b * tb_cross(cp->rb, P);
+    va = tb_mul_add(va, -wc->ma[lane], P);
+    wa -= wc->ja[lane] * tb_cross(ra, P);
+    vb = tb_mul_add(vb, wc->mb[lane], P);
+    wb += wc->jb[lane] * tb_cross(rb, P);
   }
   sa->v = va;
   sa->w = wa;
@@ -521,35 +605,27 @@ static void apply_restitution(tb_contact_constraint* cc, tb_solver_body* states,
 }
 
 void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
-  tb_contact_constraint* cs = constraints(w);
-  /* the wide lanes hold the accumulated impulses: back to the scalar constraints */
-  const tb_wide_contact* wide = (const tb_wide_contact*)w->wide;
-  for (int b = 0; b < w->wide_count; ++b) {
-    for (int lane = 0; lane < 4; ++lane) {
-      int k = wide[b].source[lane];
-      if (k < 0) continue;
-      for (int p = 0; p < 2; ++p) {
-        cs[k].points[p].normal_impulse = wide[b].p[p].normal_impulse[lane];
-        cs[k].points[p].tangent_impulse = wide[b].p[p].tangent_impulse[lane];
-        cs[k].points[p].max_normal_impulse = wide[b].p[p].max_normal_impulse[lane];
-      }
-      cs[k].rolling_impulse = wide[b].rolling_impulse[lane];
-    }
-  }
+  const tb_contact_constraint* cs = constraints(w);
+  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   /* Restitution is iterated like the velocity solve: a ball that strikes two
    * others at once (or a row of touching balls) only bounces off all of them
    * with e when each contact sees the others' impulses; one pass would leave
    * the first contact's bounce undone by the second and lose energy. */
-  for (int pass = 0; pass < TB_RESTITUTION_PASSES; ++pass)
+  bool bouncy = false; /* most scenes have no restitution: one look instead of eight */
+  for (int k = 0; k < w->step_contact_count; ++k) bouncy |= cs[k].restitution != 0.0f;
+  for (int pass = 0; bouncy && pass < TB_RESTITUTION_PASSES; ++pass)
     for (int k = 0; k < w->step_contact_count; ++k)
-      if (cs[k].restitution != 0.0f) apply_restitution(&cs[k], ctx->states, ctx->restitution_threshold);
+      if (cs[k].restitution != 0.0f)
+        apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states, ctx->restitution_threshold);
+  /* the lanes' accumulated impulses are kept for the next step's warm start */
   for (int k = 0; k < w->step_contact_count; ++k) {
-    const tb_contact_constraint* cc = &cs[k];
-    tb_contact* c = (tb_contact*)tb_pool_at(&w->contacts, cc->contact);
-    for (int p = 0; p < cc->point_count; ++p) {
-      c->manifold.points[p].normal_impulse = cc->points[p].normal_impulse;
-      c->manifold.points[p].tangent_impulse = cc->points[p].tangent_impulse;
+    const tb_wide_contact* wc = &wide[cs[k].lane / 4];
+    int lane = cs[k].lane % 4;
+    tb_contact* c = step_contact(w, k);
+    for (int p = 0; p < cs[k].point_count; ++p) {
+      c->manifold.points[p].normal_impulse = wc->p[p].normal_impulse[lane];
+      c->manifold.points[p].tangent_impulse = wc->p[p].tangent_impulse[lane];
     }
-    c->rolling_impulse = cc->rolling_impulse;
+    c->rolling_impulse = wc->rolling_impulse[lane];
   }
 }

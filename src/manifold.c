@@ -21,9 +21,14 @@
 #include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <string.h>
 
 #include "error.h"
 #include "math_internal.h"
+
+#if !defined(__GNUC__)
+#error "tumble's manifolds need GCC-style vector extensions (GCC or Clang)"
+#endif
 
 /* Below this core gap (m) a direction between two closest points is noise; the
  * face normal of the separating-axis test is used instead. */
@@ -37,10 +42,12 @@ static inline tb_transform relative_transform(tb_transform a, tb_transform b) {
   return (tb_transform){tb_inv_rotate(a.q, tb_sub(b.p, a.p)), q};
 }
 
-/* Placed within TB_MAX_LENGTH and turned by a unit rotation (as the queries ask). */
+/* Placed within TB_MAX_LENGTH and turned by a unit rotation (as the queries
+ * ask). NaN and infinities fail the comparisons, so they need no test of
+ * their own (a non-finite c or s makes c^2 + s^2 - 1 infinite or NaN). */
 static bool transform_ok(tb_transform xf) {
-  return tb_point_ok(xf.p) && isfinite(xf.q.c) && isfinite(xf.q.s) &&
-         fabsf(xf.q.c * xf.q.c + xf.q.s * xf.q.s - 1.0f) <= 1e-3f;
+  return (fabsf(xf.p.x) <= TB_MAX_LENGTH) & (fabsf(xf.p.y) <= TB_MAX_LENGTH) &
+         (fabsf(xf.q.c * xf.q.c + xf.q.s * xf.q.s - 1.0f) <= 1e-3f);
 }
 
 /* Public entry points reject NULL shapes and non-finite transforms with an empty
@@ -66,7 +73,9 @@ static float clamp01(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); 
  * compiler writes straight into the caller's return slot. (GCC 12 does not
  * elide the copy of a local tb_manifold that is returned, and that copy reads
  * back 16 bytes at a time what was just stored 4 at a time, which defeats
- * store forwarding: it cost as much as a circle-circle collision.) */
+ * store forwarding: it cost as much as a circle-circle collision.) The caller
+ * that keeps the manifold somewhere copies it out of that slot the same way,
+ * so the narrow phase has store_world write it in place instead. */
 typedef struct local_manifold {
   tb_vec2 normal; /* A to B */
   tb_vec2 point[2];
@@ -82,15 +91,33 @@ static inline void add_point(local_manifold* m, tb_vec2 p, float sep, uint32_t i
   m->count += 1;
 }
 
-static inline tb_manifold to_world(const local_manifold* l, tb_transform xfa) {
-  tb_manifold_point p0 = {{0.0f, 0.0f}, 0.0f, 0u, 0.0f, 0.0f}, p1 = p0;
-  tb_vec2 n = {0.0f, 0.0f};
+/* The normal and points of l in world (zero past its count). */
+static inline void world_parts(const local_manifold* l, tb_transform xfa, tb_vec2* n, tb_manifold_point* p0,
+                               tb_manifold_point* p1) {
+  *n = (tb_vec2){0.0f, 0.0f};
+  *p0 = *p1 = (tb_manifold_point){{0.0f, 0.0f}, 0.0f, 0u, 0.0f, 0.0f};
   if (l->count > 0) {
-    n = tb_rotate(xfa.q, l->normal);
-    p0 = (tb_manifold_point){tb_transform_point(xfa, l->point[0]), l->sep[0], l->id[0], 0.0f, 0.0f};
+    *n = tb_rotate(xfa.q, l->normal);
+    *p0 = (tb_manifold_point){tb_transform_point(xfa, l->point[0]), l->sep[0], l->id[0], 0.0f, 0.0f};
   }
-  if (l->count > 1) p1 = (tb_manifold_point){tb_transform_point(xfa, l->point[1]), l->sep[1], l->id[1], 0.0f, 0.0f};
+  if (l->count > 1) *p1 = (tb_manifold_point){tb_transform_point(xfa, l->point[1]), l->sep[1], l->id[1], 0.0f, 0.0f};
+}
+
+static inline tb_manifold to_world(const local_manifold* l, tb_transform xfa) {
+  tb_vec2 n;
+  tb_manifold_point p0, p1;
+  world_parts(l, xfa, &n, &p0, &p1);
   return (tb_manifold){n, {p0, p1}, l->count};
+}
+
+static inline void store_world(const local_manifold* l, tb_transform xfa, tb_manifold* out) {
+  tb_vec2 n;
+  tb_manifold_point p0, p1;
+  world_parts(l, xfa, &n, &p0, &p1);
+  out->normal = n;
+  out->points[0] = p0;
+  out->points[1] = p1;
+  out->point_count = l->count;
 }
 
 /* One contact between core points pa (on A) and pb (on B), A's frame, radii ra
@@ -202,57 +229,135 @@ tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa,
 
 /* ------------------------------------------- polygon-like contacts (SAT) -- */
 
-/* A convex core: count vertices counter-clockwise, edge i from v[i] to
- * v[i + 1] with outward unit normal n[i], plus a radius. A segment is the
- * two-vertex polygon p1 -> p2 -> p1 whose two edges face opposite ways. */
+/* A convex core: count vertices counter-clockwise, edge i from vertex i to
+ * vertex i + 1 with outward unit normal i, plus a radius. A segment is the
+ * two-vertex polygon p1 -> p2 -> p1 whose two edges face opposite ways.
+ *
+ * The vertices and normals are kept component by component, in groups of
+ * four lanes (past count: finite filler, never an edge), so that the
+ * separating-axis search below runs over four edges at once: a plain loop the
+ * compiler turns into vector code. The groups are built in vector registers
+ * and stored whole: stored lane by lane and then loaded whole, they would
+ * stall the loads until every separate store had landed (no store
+ * forwarding), which cost more than the search. */
+#define CORE_CAPACITY ((TB_MAX_POLYGON_VERTICES + 3) / 4 * 4)
 typedef struct core {
-  const tb_vec2* v;
-  const tb_vec2* n;
+  _Alignas(16) float vx[CORE_CAPACITY];
+  _Alignas(16) float vy[CORE_CAPACITY];
+  _Alignas(16) float nx[CORE_CAPACITY];
+  _Alignas(16) float ny[CORE_CAPACITY];
   int count;
   float radius;
 } core;
 
+static inline tb_vec2 core_vertex(const core* c, int i) { return (tb_vec2){c->vx[i], c->vy[i]}; }
+static inline tb_vec2 core_normal(const core* c, int i) { return (tb_vec2){c->nx[i], c->ny[i]}; }
+
+/* Four float lanes (GCC and Clang vector extensions, as in contact_solver.c).
+ * SHUFFLE: lane k of the result is lane i_k of a (0-3) or of b (4-7). */
+typedef float lane4 __attribute__((vector_size(16)));
+typedef int32_t mask4 __attribute__((vector_size(16)));
+
+#if defined(__clang__) || __GNUC__ >= 12
+#define SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+#define SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (mask4){i0, i1, i2, i3})
+#endif
+
+static inline lane4 splat4(float x) { return (lane4){x, x, x, x}; }
+
+/* Group g of a core's four columns. */
+typedef struct core_group {
+  lane4 vx, vy, nx, ny;
+} core_group;
+
+static inline void store_group(core* c, int g, const core_group* q) {
+  memcpy(&c->vx[4 * g], &q->vx, sizeof q->vx);
+  memcpy(&c->vy[4 * g], &q->vy, sizeof q->vy);
+  memcpy(&c->nx[4 * g], &q->nx, sizeof q->nx);
+  memcpy(&c->ny[4 * g], &q->ny, sizeof q->ny);
+}
+
+/* x and y of points p[4 g .. 4 g + 3] of an array of `size`, zero from lane
+ * `count` on: two 16-byte loads split by two shuffles (lanes past size are
+ * built one by one). */
+static inline void columns(const tb_vec2* p, int size, int count, int g, lane4* x, lane4* y) {
+  int i0 = 4 * g;
+  lane4 lo, hi;
+  if (i0 + 4 <= size) {
+    memcpy(&lo, &p[i0], sizeof lo);
+    memcpy(&hi, &p[i0 + 2], sizeof hi);
+  } else {
+    tb_vec2 q[4] = {{0.0f, 0.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}};
+    for (int l = 0; i0 + l < count; ++l) q[l] = p[i0 + l];
+    lo = (lane4){q[0].x, q[0].y, q[1].x, q[1].y};
+    hi = (lane4){q[2].x, q[2].y, q[3].x, q[3].y};
+  }
+  mask4 used = (mask4){0, 1, 2, 3} < (mask4){count - i0, count - i0, count - i0, count - i0};
+  *x = (lane4)((mask4)SHUFFLE(lo, hi, 0, 2, 4, 6) & used);
+  *y = (lane4)((mask4)SHUFFLE(lo, hi, 1, 3, 5, 7) & used);
+}
+
 static int next_index(int i, int count) { return i + 1 < count ? i + 1 : 0; }
 
-/* Segment p1-p2 as a two-vertex core; v and n (2 entries each) hold its data. */
-static core segment_core(tb_vec2 p1, tb_vec2 p2, float radius, tb_vec2* v, tb_vec2* n) {
-  v[0] = p1;
-  v[1] = p2;
-  n[0] = tb_normalize(tb_right_perp(tb_sub(p2, p1)));
-  n[1] = tb_neg(n[0]);
-  return (core){v, n, 2, radius};
+/* Segment p1-p2 as a two-vertex core. */
+static void segment_core(core* c, tb_vec2 p1, tb_vec2 p2, float radius) {
+  tb_vec2 n = tb_normalize(tb_right_perp(tb_sub(p2, p1)));
+  core_group q = {{p1.x, p2.x, 0.0f, 0.0f}, {p1.y, p2.y, 0.0f, 0.0f}, {n.x, -n.x, 0.0f, 0.0f}, {n.y, -n.y, 0.0f, 0.0f}};
+  store_group(c, 0, &q);
+  c->count = 2;
+  c->radius = radius;
 }
 
-/* Polygon b moved by xf into v and n. */
-static core moved_polygon(const tb_polygon* b, tb_transform xf, tb_vec2* v, tb_vec2* n) {
-  for (int i = 0; i < b->count; ++i) {
-    v[i] = tb_transform_point(xf, b->vertices[i]);
-    n[i] = tb_rotate(xf.q, b->normals[i]);
+/* Polygon b moved by xf, group by group with the operations of
+ * tb_transform_point and tb_rotate. */
+static void polygon_core(core* c, const tb_polygon* b, tb_transform xf) {
+  lane4 px = splat4(xf.p.x), py = splat4(xf.p.y), qc = splat4(xf.q.c), qs = splat4(xf.q.s);
+  for (int g = 0; 4 * g < b->count; ++g) {
+    lane4 vx, vy, nx, ny;
+    columns(b->vertices, TB_MAX_POLYGON_VERTICES, b->count, g, &vx, &vy);
+    columns(b->normals, TB_MAX_POLYGON_VERTICES, b->count, g, &nx, &ny);
+    core_group q = {px + (qc * vx - qs * vy), py + (qs * vx + qc * vy), qc * nx - qs * ny, qs * nx + qc * ny};
+    store_group(c, g, &q);
   }
-  return (core){v, n, b->count, b->radius};
+  c->count = b->count;
+  c->radius = b->radius;
 }
 
-static core polygon_core(const tb_polygon* a) { return (core){a->vertices, a->normals, a->count, a->radius}; }
+/* Polygon a where it is (A's own frame). */
+static void local_polygon_core(core* c, const tb_polygon* a) {
+  for (int g = 0; 4 * g < a->count; ++g) {
+    core_group q;
+    columns(a->vertices, TB_MAX_POLYGON_VERTICES, a->count, g, &q.vx, &q.vy);
+    columns(a->normals, TB_MAX_POLYGON_VERTICES, a->count, g, &q.nx, &q.ny);
+    store_group(c, g, &q);
+  }
+  c->count = a->count;
+  c->radius = a->radius;
+}
 
 /* The edge of p along whose normal q lies farthest out: the greatest, over p's
- * edges, of the least signed distance of q's vertices to the edge's line. For
- * polygons with area that is minus the penetration depth when they overlap and
- * a lower bound of the core gap when they do not. Stops at the first edge above
- * limit: it separates the cores by more than any contact needs. */
-static float max_separation(const core* p, const core* q, float limit, int* edge) {
+ * edges, of the least signed distance of q's vertices to the edge's line (the
+ * lowest index among equals). For polygons with area that is minus the
+ * penetration depth when they overlap and a lower bound of the core gap when
+ * they do not. */
+static float max_separation(const core* p, const core* q, int* edge) {
   float best = -FLT_MAX;
   int best_i = 0;
-  for (int i = 0; i < p->count; ++i) {
-    tb_vec2 n = p->n[i], v = p->v[i];
-    float s = FLT_MAX;
-    for (int j = 0; j < q->count; ++j) { /* difference first: exact for nearby points */
-      float d = tb_dot(n, tb_sub(q->v[j], v));
-      s = d < s ? d : s;
+  for (int i0 = 0; i0 < p->count; i0 += 4) {
+    float s[4] = {FLT_MAX, FLT_MAX, FLT_MAX, FLT_MAX};
+    for (int j = 0; j < q->count; ++j) {
+      float qx = q->vx[j], qy = q->vy[j];
+      for (int l = 0; l < 4; ++l) { /* n . (q_j - v): difference first, exact for nearby points */
+        float d = p->nx[i0 + l] * (qx - p->vx[i0 + l]) + p->ny[i0 + l] * (qy - p->vy[i0 + l]);
+        s[l] = d < s[l] ? d : s[l];
+      }
     }
-    if (s > best) {
-      best = s;
-      best_i = i;
-      if (s > limit) break;
+    for (int l = 0; l < 4 && i0 + l < p->count; ++l) {
+      if (s[l] > best) {
+        best = s[l];
+        best_i = i0 + l;
+      }
     }
   }
   *edge = best_i;
@@ -313,8 +418,8 @@ static inline void feature_at(float f, int k1, int k2, int* index, uint32_t* typ
  * vertex, gap beyond the tolerance), where no face normal is right. When they
  * (nearly) touch the separating axis is kept, with its depth. */
 static void closest_contact(local_manifold* m, const face_pair* fp, float fr, float fi) {
-  tb_vec2 cr = tb_lerp(fp->ref->v[fp->i1], fp->ref->v[fp->i2], fr);
-  tb_vec2 ci = tb_lerp(fp->inc->v[fp->j1], fp->inc->v[fp->j2], fi);
+  tb_vec2 cr = tb_lerp(core_vertex(fp->ref, fp->i1), core_vertex(fp->ref, fp->i2), fr);
+  tb_vec2 ci = tb_lerp(core_vertex(fp->inc, fp->j1), core_vertex(fp->inc, fp->j2), fi);
   tb_vec2 d = tb_sub(ci, cr);
   float dist = tb_length(d);
   float r = fp->ref->radius + fp->inc->radius;
@@ -354,9 +459,9 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
 static void collide_cores(local_manifold* m, const core* a, const core* b) {
   float limit = a->radius + b->radius + TB_SPECULATIVE_DISTANCE;
   int ea, eb;
-  float sa = max_separation(a, b, limit, &ea);
+  float sa = max_separation(a, b, &ea);
   if (!(sa < limit)) return;
-  float sb = max_separation(b, a, limit, &eb);
+  float sb = max_separation(b, a, &eb);
   if (!(sb < limit)) return;
 
   face_pair fp;
@@ -366,11 +471,11 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
   fp.i1 = fp.flip ? eb : ea;
   fp.i2 = next_index(fp.i1, fp.ref->count);
   fp.s = fp.flip ? sb : sa;
-  fp.n = fp.ref->n[fp.i1];
+  fp.n = core_normal(fp.ref, fp.i1);
   fp.j1 = 0;
   float most = FLT_MAX;
   for (int j = 0; j < fp.inc->count; ++j) {
-    float d = tb_dot(fp.n, fp.inc->n[j]);
+    float d = tb_dot(fp.n, core_normal(fp.inc, j));
     if (d < most) {
       most = d;
       fp.j1 = j;
@@ -379,8 +484,8 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
   fp.j2 = next_index(fp.j1, fp.inc->count);
 
   /* slab of the reference face: u in [0, len] along its tangent */
-  tb_vec2 r1 = fp.ref->v[fp.i1], r2 = fp.ref->v[fp.i2];
-  tb_vec2 p[2] = {fp.inc->v[fp.j1], fp.inc->v[fp.j2]};
+  tb_vec2 r1 = core_vertex(fp.ref, fp.i1), r2 = core_vertex(fp.ref, fp.i2);
+  tb_vec2 p[2] = {core_vertex(fp.inc, fp.j1), core_vertex(fp.inc, fp.j2)};
   tb_vec2 t = tb_left_perp(fp.n);
   float len = tb_dot(tb_sub(r2, r1), t);
   float u[2] = {tb_dot(tb_sub(p[0], r1), t), tb_dot(tb_sub(p[1], r1), t)};
@@ -435,9 +540,9 @@ tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_
   local_manifold m = {0};
   if (args_ok(a, xfa, b, xfb, "tb_collide_capsules")) {
     tb_transform rel = relative_transform(xfa, xfb);
-    tb_vec2 va[2], na[2], vb[2], nb[2];
-    core ca = segment_core(a->center1, a->center2, a->radius, va, na);
-    core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
+    core ca, cb;
+    segment_core(&ca, a->center1, a->center2, a->radius);
+    segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
     collide_cores(&m, &ca, &cb);
   }
   return to_world(&m, xfa);
@@ -448,9 +553,9 @@ tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa
   local_manifold m = {0};
   if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_capsule")) {
     tb_transform rel = relative_transform(xfa, xfb);
-    tb_vec2 va[2], na[2], vb[2], nb[2];
-    core ca = segment_core(a->point1, a->point2, 0.0f, va, na);
-    core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
+    core ca, cb;
+    segment_core(&ca, a->point1, a->point2, 0.0f);
+    segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
     collide_cores(&m, &ca, &cb);
   }
   return to_world(&m, xfa);
@@ -460,9 +565,9 @@ tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa
                                            tb_transform xfb) {
   local_manifold m = {0};
   if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_polygon")) {
-    tb_vec2 va[2], na[2], vb[TB_MAX_POLYGON_VERTICES], nb[TB_MAX_POLYGON_VERTICES];
-    core ca = segment_core(a->point1, a->point2, 0.0f, va, na);
-    core cb = moved_polygon(b, relative_transform(xfa, xfb), vb, nb);
+    core ca, cb;
+    segment_core(&ca, a->point1, a->point2, 0.0f);
+    polygon_core(&cb, b, relative_transform(xfa, xfb));
     collide_cores(&m, &ca, &cb);
   }
   return to_world(&m, xfa);
@@ -473,21 +578,33 @@ tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa
   local_manifold m = {0};
   if (args_ok(a, xfa, b, xfb, "tb_collide_polygon_and_capsule")) {
     tb_transform rel = relative_transform(xfa, xfb);
-    tb_vec2 vb[2], nb[2];
-    core ca = polygon_core(a);
-    core cb = segment_core(tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius, vb, nb);
+    core ca, cb;
+    local_polygon_core(&ca, a);
+    segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
     collide_cores(&m, &ca, &cb);
   }
   return to_world(&m, xfa);
 }
 
+/* tb_collide_polygons in A's frame */
+static void polygons_local(local_manifold* m, const tb_polygon* a, tb_transform xfa, const tb_polygon* b,
+                           tb_transform xfb) {
+  if (!args_ok(a, xfa, b, xfb, "tb_collide_polygons")) return;
+  core ca, cb;
+  local_polygon_core(&ca, a);
+  polygon_core(&cb, b, relative_transform(xfa, xfb));
+  collide_cores(m, &ca, &cb);
+}
+
 tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_polygons")) {
-    tb_vec2 vb[TB_MAX_POLYGON_VERTICES], nb[TB_MAX_POLYGON_VERTICES];
-    core ca = polygon_core(a);
-    core cb = moved_polygon(b, relative_transform(xfa, xfb), vb, nb);
-    collide_cores(&m, &ca, &cb);
-  }
+  polygons_local(&m, a, xfa, b, xfb);
   return to_world(&m, xfa);
+}
+
+void tb_collide_polygons_into(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb,
+                              tb_manifold* out) {
+  local_manifold m = {0};
+  polygons_local(&m, a, xfa, b, xfb);
+  store_world(&m, xfa, out);
 }

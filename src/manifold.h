@@ -1,4 +1,5 @@
-/* Contact manifolds (the narrow phase): the feature-id layout (not public).
+/* Contact manifolds (the narrow phase): the feature-id layout and the
+ * narrow phase's form of a collide function (not public).
  *
  * A manifold point's id names the pair of features that made it, one byte each:
  *   bits 0-7   index of the feature on shape A (vertex or edge index)
@@ -29,5 +30,11 @@
 static inline uint32_t tb_make_feature_id(uint32_t index_a, uint32_t type_a, uint32_t index_b, uint32_t type_b) {
   return (index_a & 0xffu) | (index_b & 0xffu) << 8 | type_a << 16 | type_b << 24;
 }
+
+/* tb_collide_polygons for the narrow phase, which keeps the manifold in the
+ * contact: written there field by field (copied from a returned one, it would
+ * be read back wider than it was just written, a stall; see manifold.c). */
+void tb_collide_polygons_into(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb,
+                              tb_manifold* out);
 
 #endif
