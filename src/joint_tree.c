@@ -39,8 +39,9 @@
 /* The tree softness: the drift of a tree's rows is corrected at h omega = 8,
  * far stiffer than Gauss-Seidel allows (h omega ~ 1.5), and their compliance
  * is g = 1 / (h omega (2 zeta + h omega)) ~ 1 / 100 of the row's own inverse
- * effective mass. The relax pass uses a compliance of 1e-9: rigid, yet every
- * leaf block stays invertible. */
+ * effective mass. The relax pass uses a compliance of 1e-6: rigid to a
+ * millionth, yet every leaf block stays invertible and well conditioned in
+ * double (1e-9 left relax impulses wrong by tens of percent). */
 #define TB_TREE_H_OMEGA 8.0f
 #define TB_TREE_RELAX_COMPLIANCE 1e-6
 
@@ -48,8 +49,9 @@ typedef struct tb_jt_node {
   int parent;  /* node index, -1 for a root */
   int dof;     /* 3 for a body, the row count for a joint */
   int ref;     /* body: solver index; joint: joint index */
-  int first;   /* body: its first edge in tree->edges; joint: body A's node */
-  int count;   /* body: its edge count; joint: body B's node */
+  int first;   /* body: its first edge in tree->edges */
+  int count;   /* body: its edge count */
+  int a, b;    /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
   double d[3][3];  /* D, then D^-1 */
   double hp[3][3]; /* H_{i,parent}: dof x the parent's dof */
   double y[3];     /* right-hand side, then the solution */
@@ -154,10 +156,10 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     const tb_joint* j = tb_joint_at(w, index);
     if (!j->in_tree) continue;
     int n = add_node(t, tb_joint_rigid_row_count(j), index);
-    t->nodes[n].first = is_node_body(ctx, j->solver_a) ? body_node[j->solver_a] : -1;
-    t->nodes[n].count = is_node_body(ctx, j->solver_b) ? body_node[j->solver_b] : -1;
-    if (t->nodes[n].first >= 0) t->nodes[t->nodes[n].first].count += 1;
-    if (t->nodes[n].count >= 0) t->nodes[t->nodes[n].count].count += 1;
+    t->nodes[n].a = is_node_body(ctx, j->solver_a) ? body_node[j->solver_a] : -1;
+    t->nodes[n].b = is_node_body(ctx, j->solver_b) ? body_node[j->solver_b] : -1;
+    if (t->nodes[n].a >= 0) t->nodes[t->nodes[n].a].count += 1;
+    if (t->nodes[n].b >= 0) t->nodes[t->nodes[n].b].count += 1;
   }
   /* body -> joint edges (CSR) */
   int at = 0;
@@ -167,7 +169,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     t->nodes[b].count = 0;
   }
   for (int n = body_nodes; n < t->node_count; ++n) {
-    int ends[2] = {t->nodes[n].first, t->nodes[n].count};
+    int ends[2] = {t->nodes[n].a, t->nodes[n].b};
     for (int e = 0; e < 2; ++e)
       if (ends[e] >= 0) t->edges[t->nodes[ends[e]].first + t->nodes[ends[e]].count++] = n;
   }
@@ -184,7 +186,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       const tb_jt_node* n = &t->nodes[i];
       int around = i < body_nodes ? n->count : 2;
       for (int e = 0; e < around; ++e) {
-        int m = i < body_nodes ? t->edges[n->first + e] : (e == 0 ? n->first : n->count);
+        int m = i < body_nodes ? t->edges[n->first + e] : (e == 0 ? n->a : n->b);
         if (m < 0 || t->nodes[m].parent != -2) continue;
         t->nodes[m].parent = i;
         t->order[ordered++] = m;
@@ -291,11 +293,11 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
     tb_jt_node* n = &t->nodes[i];
     if (n->parent < 0) continue;
     if (i >= t->body_nodes) {
-      joint_block(n, n->first == n->parent, n->hp);
+      joint_block(n, n->a == n->parent, n->hp);
     } else {
       const tb_jt_node* joint = &t->nodes[n->parent];
       double block[3][3];
-      joint_block(joint, joint->first == i, block);
+      joint_block(joint, joint->a == i, block);
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < joint->dof; ++c) n->hp[r][c] = block[c][r];
     }
