@@ -192,10 +192,14 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
  * with its rotational stiffness 2 k a^2 (points at +-a), and summed over the
  * column the load wins near n = 12 at 30 Hz: tall stacks buckle slowly. So a
  * point carrying F (its last impulse over h: the warm start) is stiffened
- * until F compresses it at most TB_LOAD_COMPRESSION, which keeps the sum
- * below 1 past 30 boxes, up to h omega = TB_MAX_H_OMEGA, where the soft
- * constraint is nearly rigid with a position bias of about a sixth of the
- * error per substep (the Baumgarte factor Box2D 2.4 uses). Against a static or
+ * until F compresses it at most TB_LOAD_COMPRESSION, up to h omega =
+ * TB_MAX_H_OMEGA. (The column of rotational springs is statically stable
+ * while diag(k_i) - g L^T W L is positive definite, L summing the interface
+ * tilts into block tilts and W the weight above each block: at 60 Hz and 4
+ * substeps that holds to 21 boxes; stiffer caps jitter.) At the cap the soft
+ * constraint is nearly rigid (mass scale 0.98 at damping ratio 10) with a
+ * position bias of h omega / (2 zeta + h omega) = 7 % of the error per
+ * substep. Against a static or
  * kinematic body the base stiffness is twice as high. */
 #define TB_LOAD_COMPRESSION 0.002f
 #define TB_MAX_H_OMEGA 1.5f

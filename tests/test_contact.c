@@ -335,6 +335,58 @@ START_TEST(pre_solve_set_later) {
 }
 END_TEST
 
+/* Records the manifold the solver is about to warm-start from. */
+static bool record_manifold(tb_shape_id a, tb_shape_id b, const tb_manifold* m, void* context) {
+  (void)a;
+  (void)b;
+  *(tb_manifold*)context = *m;
+  return true;
+}
+
+/* A box resting flush on a box of its width: shifted across the lower box's
+ * centre line by 0.2 mm, each end of the contact edge switches from one
+ * box's corner to the other's, so both points get new feature ids while
+ * staying where they were. They keep their impulses (the warm start) rather
+ * than starting cold; a cold start dropped the load for a substep and, in a
+ * 30-box column, grew into a topple. */
+START_TEST(impulses_follow_points_whose_id_changed) {
+  tb_manifold seen = {{0.0f, 0.0f}, {{{0.0f, 0.0f}, 0.0f, 0, 0.0f, 0.0f}}, 0};
+  tb_world_def wd = tb_default_world_def();
+  wd.enable_sleep = false;
+  wd.pre_solve = record_manifold;
+  wd.pre_solve_context = &seen;
+  tb_world_id w = tb_create_world(&wd);
+  tb_shape_def sd = tb_default_shape_def();
+  tb_polygon ground, box;
+  tb_make_box(5.0f, 0.5f, &ground);
+  tb_make_box(0.5f, 0.5f, &box);
+  tb_create_polygon_shape(make_body(w, TB_STATIC_BODY, 0.0f, -0.5f), &sd, &ground);
+  tb_create_polygon_shape(make_body(w, TB_DYNAMIC_BODY, 0.0f, 0.5f), &sd, &box);
+  sd.enable_pre_solve_events = true;
+  tb_body_id top = make_body(w, TB_DYNAMIC_BODY, 1e-4f, 1.5f);
+  tb_create_polygon_shape(top, &sd, &box);
+  for (int i = 0; i < 60; ++i) tb_world_step(w, 1.0f / 60.0f, 4);
+  tb_contact_data before;
+  ck_assert_int_eq(tb_body_get_contact_data(top, &before, 1), 1);
+  ck_assert_int_eq(before.manifold.point_count, 2);
+  /* each point carries half the top box's weight, 1 kg x 10 m/s^2 x h / 2 */
+  float h = 1.0f / 240.0f;
+  for (int k = 0; k < 2; ++k) ck_assert_float_eq_tol(before.manifold.points[k].normal_impulse, 5.0f * h, 0.05f * h);
+  tb_vec2 p = tb_body_get_position(top);
+  ck_assert_int_eq(tb_body_set_transform(top, (tb_vec2){-1e-4f, p.y}, 0.0f), TB_OK);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  ck_assert_int_eq(seen.point_count, 2);
+  for (int k = 0; k < 2; ++k) {
+    bool same_id = false;
+    for (int j = 0; j < 2; ++j) same_id |= seen.points[k].id == before.manifold.points[j].id;
+    ck_assert_msg(!same_id, "point %d kept its feature id %x: the shift no longer switches features", k,
+                  seen.points[k].id);
+    ck_assert_float_eq_tol(seen.points[k].normal_impulse, 5.0f * h, 0.05f * h);
+  }
+  tb_destroy_world(w);
+}
+END_TEST
+
 START_TEST(default_mixing_is_geometric_mean) {
   tb_world_id w = tbt_world(0.0f, 0.0f);
   tb_shape_def sd = tb_default_shape_def();
@@ -408,6 +460,7 @@ static Suite* contact_suite(void) {
   tcase_add_test(tc, sensor_events);
   tcase_add_test(tc, pre_solve_and_mixing);
   tcase_add_test(tc, pre_solve_set_later);
+  tcase_add_test(tc, impulses_follow_points_whose_id_changed);
   tcase_add_test(tc, default_mixing_is_geometric_mean);
   tcase_add_test(tc, touching_pairs_match_brute_force);
   suite_add_tcase(s, tc);
