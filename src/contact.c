@@ -233,33 +233,31 @@ static void report_begin(tb_world* w, const tb_contact* c) {
  * depending on a rounding-level offset, so its id flips from step to step.
  * Starting such a point cold drops its share of the load for a substep, and
  * in a tall column the kick grows into a topple; it inherits instead. */
+static void inherit(tb_manifold_point* p, const tb_manifold_point* from) {
+  p->normal_impulse = from->normal_impulse;
+  p->tangent_impulse = from->tangent_impulse;
+}
+
 static void carry_impulses(const tb_manifold* old, tb_manifold* m) {
   bool taken[2] = {false, false};
   bool found[2] = {false, false};
   for (int i = 0; i < m->point_count; ++i) {
     tb_manifold_point* p = &m->points[i];
     p->normal_impulse = p->tangent_impulse = 0.0f;
-    for (int k = 0; k < old->point_count; ++k)
+    for (int k = 0; k < old->point_count && !found[i]; ++k)
       if (!taken[k] && old->points[k].id == p->id) {
-        p->normal_impulse = old->points[k].normal_impulse;
-        p->tangent_impulse = old->points[k].tangent_impulse;
+        inherit(p, &old->points[k]);
         taken[k] = found[i] = true;
-        break;
       }
   }
-  for (int i = 0; i < m->point_count; ++i) {
-    if (found[i]) continue;
-    tb_manifold_point* p = &m->points[i];
-    for (int k = 0; k < old->point_count; ++k) {
-      tb_vec2 d = tb_sub(old->points[k].point, p->point);
+  for (int i = 0; i < m->point_count; ++i)
+    for (int k = 0; k < old->point_count && !found[i]; ++k) {
+      tb_vec2 d = tb_sub(old->points[k].point, m->points[i].point);
       if (!taken[k] && tb_dot(d, d) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
-        p->normal_impulse = old->points[k].normal_impulse;
-        p->tangent_impulse = old->points[k].tangent_impulse;
-        taken[k] = true;
-        break;
+        inherit(&m->points[i], &old->points[k]);
+        taken[k] = found[i] = true;
       }
     }
-  }
 }
 
 /* Updates one contact; false when it was destroyed (bounding boxes apart). */

@@ -199,8 +199,8 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
  * substeps that holds to 21 boxes; stiffer caps jitter.) At the cap the soft
  * constraint is nearly rigid (mass scale 0.98 at damping ratio 10) with a
  * position bias of h omega / (2 zeta + h omega) = 7 % of the error per
- * substep. Against a static or
- * kinematic body the base stiffness is twice as high. */
+ * substep. Against a static or kinematic body the base stiffness is twice as
+ * high. */
 #define TB_LOAD_COMPRESSION 0.002f
 #define TB_MAX_H_OMEGA 1.5f
 #define TB_TWO_PI (2.0f * 3.14159265358979f)
