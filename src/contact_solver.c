@@ -5,10 +5,13 @@
  * Soft contact (Catto, "Solver2D"; see solver.h for the softness terms). For
  * a point with current separation s the normal impulse increment is
  *   s > 0 (speculative):  -m_n (v_n + s / h)            (close the gap, no more)
- *   s <= 0, biased pass:  -m_n mass_scale (v_n + max(bias_rate s, -push_max))
+ *   s <= 0, biased pass:  -m_n mass_scale (v_n + max(bias_rate max(s, -d_push), -push_max))
  *                         - impulse_scale P_n
  *   s <= 0, relax pass:   -m_n v_n
- * and the accumulated P_n stays >= 0. The two points of a manifold are solved
+ * and the accumulated P_n stays >= 0. d_push is the depth the point's load
+ * explains plus TB_DEEP_OVERLAP; an overlap deeper than that (bodies created
+ * or moved into each other) is pushed out without momentum, see
+ * tb_contact_solver_push_out. The two points of a manifold are solved
  * together (a 2x2 block, see solve_wide), so that neither is favoured: solved
  * one after the other, the first takes more of the load and a symmetric stack
  * starts to rock. Friction clamps |P_t| <= mu P_n per
@@ -48,12 +51,21 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
 
 #define TB_COLORS 24
 
+/* Deep overlap (bodies created or moved into each other, or crushed by a load
+ * the soft contact cannot hold): the soft push of a point only grows down to
+ * TB_DEEP_OVERLAP; deeper than that, a separate momentum-free push-out moves
+ * the bodies apart (see tb_contact_solver_push_out). */
+#define TB_DEEP_OVERLAP (2.0f * TB_LINEAR_SLOP)
+#define TB_PUSH_OUT_RATE 0.2f /* share of the excess depth removed per substep */
+#define TB_PUSH_OUT_SWEEPS 4
+
 /* Four contacts of one colour, field by field. A lane holds one contact
  * constraint; a contact with one point has an inert second point (no mass,
  * far apart) so that every lane has two. */
 typedef struct tb_wide_point {
   tb_f4 rax, ray, rbx, rby; /* anchors from each centre of mass, world-oriented, at step start */
   tb_f4 base_separation;    /* s0, the separation at the step start */
+  tb_f4 push_depth;         /* the soft push acts down to this depth, the push-out beyond */
   tb_f4 normal_mass, tangent_mass;
   tb_f4 normal_impulse, tangent_impulse, max_normal_impulse;
 } tb_wide_point;
@@ -78,6 +90,14 @@ typedef struct tb_contact_constraint {
   float restitution;
   float relative_velocity[2]; /* normal speed of the points at the step start */
 } tb_contact_constraint;
+
+/* A contact with a point deeper than its push depth (less half
+ * TB_DEEP_OVERLAP) at the step start: where it is in the wide contacts, and
+ * its points' push-out impulses in the current substep. */
+typedef struct tb_deep_contact {
+  int32_t block, lane;
+  float impulse[2];
+} tb_deep_contact;
 
 /* ---- scratch --------------------------------------------------------------- */
 
@@ -209,7 +229,9 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
  * or, where load stiffening asks for more (need: the largest of the base
  * omega^2 and the points' F / (m_n TB_LOAD_COMPRESSION)), a stiffer one.
  * Few lanes are stiffened; each takes tb_make_softness. */
-static void load_softness(const tb_step_context* ctx, tb_i4 rigid_other, tb_f4 omega, tb_f4 need, tb_wide_contact* wc) {
+static tb_f4 load_softness(const tb_step_context* ctx, tb_i4 rigid_other, tb_f4 omega, tb_f4 need,
+                           tb_wide_contact* wc) {
+  tb_f4 omega2 = omega * omega;
   wc->bias_rate = blend(rigid_other, splat(ctx->static_softness.bias_rate), splat(ctx->contact_softness.bias_rate));
   wc->mass_scale = blend(rigid_other, splat(ctx->static_softness.mass_scale), splat(ctx->contact_softness.mass_scale));
   for (int lane = 0; lane < 4; ++lane) {
@@ -220,7 +242,9 @@ static void load_softness(const tb_step_context* ctx, tb_i4 rigid_other, tb_f4 o
     tb_softness soft = tb_make_softness(stiff / TB_TWO_PI, ctx->contact_damping_ratio, ctx->h);
     wc->bias_rate[lane] = soft.bias_rate;
     wc->mass_scale[lane] = soft.mass_scale;
+    omega2[lane] = stiff * stiff;
   }
+  return omega2;
 }
 
 /* Prepares the constraints of one block's contacts, four lanes at a time
@@ -316,7 +340,16 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wc->n12 = blend(block, -inv * k12, zero);
   wc->n22 = blend(block, inv * k11, zero);
   wc->block = blend(block, one, zero);
-  load_softness(ctx, rigid_other, omega, need, wc);
+  /* The soft push acts down to the depth at which the points' load (their
+   * warm start) rests on the springs, plus TB_DEEP_OVERLAP; what lies deeper,
+   * an overlap the load does not explain, is the push-out's. The springs hold
+   * impulses a = F h at K a = h omega^2 (-s) (the soft update's fixed point at
+   * v_n = 0; K the points' mass matrix inverse, diagonal where they are solved
+   * one by one; one point alone: -s = F / (m_n omega^2)). */
+  tb_f4 per_depth = splat(ctx->inv_h) / load_softness(ctx, rigid_other, omega, need, wc);
+  tb_f4 a1 = wc->p[0].normal_impulse, a2 = wc->p[1].normal_impulse, k12_block = blend(block, k12, zero);
+  wc->p[0].push_depth = (k11 * a1 + k12_block * a2) * per_depth + splat(TB_DEEP_OVERLAP);
+  wc->p[1].push_depth = (k12_block * a1 + k22 * a2) * per_depth + splat(TB_DEEP_OVERLAP);
   for (int lane = 0; lane < 4; ++lane) {
     if (k[lane] < 0) continue;
     tb_contact_constraint* cc = &constraints(w)[k[lane]];
@@ -359,6 +392,32 @@ static void color_constraints(tb_world* w, const tb_step_context* ctx, int* colo
     cs[k].lane = color;
     color_count[color] += 1;
   }
+}
+
+/* The deep points of the step, and room for the push velocities when there
+ * are any. */
+static bool collect_deep_points(tb_world* w, tb_step_context* ctx) {
+  const tb_wide_contact* wide = (const tb_wide_contact*)w->wide;
+  w->deep_count = 0;
+  for (int b = 0; b < w->wide_count; ++b)
+    for (int lane = 0; lane < 4; ++lane) {
+      bool deep = false;
+      for (int p = 0; p < 2; ++p) {
+        const tb_wide_point* wp = &wide[b].p[p];
+        deep |=
+            wp->base_separation[lane] + wp->push_depth[lane] < 0.5f * TB_DEEP_OVERLAP && wp->normal_mass[lane] > 0.0f;
+      }
+      if (!deep) continue;
+      if (!tb_array_reserve(&w->deep_points, &w->deep_capacity, w->deep_count + 1, sizeof(tb_deep_contact)))
+        return false;
+      ((tb_deep_contact*)w->deep_points)[w->deep_count++] = (tb_deep_contact){b, lane, {0.0f, 0.0f}};
+    }
+  ctx->push_velocities = NULL;
+  if (w->deep_count == 0) return true;
+  if (!tb_array_reserve((void**)&w->push_velocities, &w->push_capacity, 3 * (ctx->static_index + 1), sizeof(float)))
+    return false;
+  ctx->push_velocities = w->push_velocities;
+  return true;
 }
 
 bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
@@ -406,7 +465,7 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
     for (int lane = 0; lane < 4; ++lane)
       if (k[lane] < 0) clear_lane(&wide[b], lane, ctx->static_index);
   }
-  return true;
+  return collect_deep_points(w, ctx);
 }
 
 /* ---- wide solve ------------------------------------------------------------ */
@@ -457,7 +516,7 @@ static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point*
   tb_i4 speculative = s > zero;
   tb_f4 bias;
   if (use_bias) {
-    bias = blend(speculative, s * inv_h, max4(c->bias_rate * s, splat(-push)));
+    bias = blend(speculative, s * inv_h, max4(c->bias_rate * max4(s, -cp->push_depth), splat(-push)));
     *mass_scale = blend(speculative, one, c->mass_scale);
   } else {
     bias = blend(speculative, s * inv_h, zero);
@@ -543,6 +602,91 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   }
   scatter(states, c->a, &A);
   scatter(states, c->b, &B);
+}
+
+/* ---- deep overlap push-out ----------------------------------------------------- */
+
+/* Split impulse (Catto, GDC 2006; Bullet): each deep point is pushed apart in
+ * velocities of its own, u, that move the bodies in this substep's position
+ * update and are then dropped, so the push leaves no momentum. The velocity
+ * solve's soft push would: its impulse is real, and in a pile the relative
+ * pushes add up body by body (a fifth box up a column rises at five times
+ * the cap) faster than the one relax sweep takes them back out. The target is
+ * the share TB_PUSH_OUT_RATE of the depth beyond TB_DEEP_OVERLAP per substep,
+ * at most contact_push_max_velocity apart, with impulses >= 0 (Gauss-Seidel,
+ * accumulated over the sweeps of one substep). */
+/* The push velocity of B relative to A at a point, along n. */
+static float push_speed(const float* ua, const float* ub, tb_vec2 ra, tb_vec2 rb, tb_vec2 n) {
+  tb_vec2 du = tb_sub(tb_add((tb_vec2){ub[0], ub[1]}, tb_cross_sv(ub[2], rb)),
+                      tb_add((tb_vec2){ua[0], ua[1]}, tb_cross_sv(ua[2], ra)));
+  return tb_dot(du, n);
+}
+
+void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
+  if (!ctx->push_velocities) return;
+  float* u = ctx->push_velocities;
+  memset(u, 0, (size_t)(3 * (ctx->static_index + 1)) * sizeof(float));
+  tb_deep_contact* deep = (tb_deep_contact*)w->deep_points;
+  const tb_wide_contact* wide = (const tb_wide_contact*)w->wide;
+  const tb_solver_body* states = ctx->states;
+  float push = ctx->contact_push_max_velocity, rate = TB_PUSH_OUT_RATE * ctx->inv_h;
+  for (int i = 0; i < w->deep_count; ++i) deep[i].impulse[0] = deep[i].impulse[1] = 0.0f;
+  for (int sweep = 0; sweep < TB_PUSH_OUT_SWEEPS; ++sweep)
+    for (int i = 0; i < w->deep_count; ++i) {
+      const tb_wide_contact* c = &wide[deep[i].block];
+      int lane = deep[i].lane, a = c->a[lane], b = c->b[lane];
+      const tb_solver_body *sa = &states[a], *sb = &states[b];
+      float *ua = &u[3 * a], *ub = &u[3 * b];
+      tb_vec2 n = {c->nx[lane], c->ny[lane]}, ra[2], rb[2];
+      float r[2], k[2][2] = {{c->k11[lane], c->k12[lane]}, {c->k12[lane], c->k22[lane]}};
+      float* acc = deep[i].impulse;
+      /* r = (push speed without this contact's impulses) - target; an inert
+       * second point (no mass) gets r = 0 and never moves */
+      for (int p = 0; p < 2; ++p) {
+        const tb_wide_point* cp = &c->p[p];
+        ra[p] = (tb_vec2){cp->rax[lane], cp->ray[lane]};
+        rb[p] = (tb_vec2){cp->rbx[lane], cp->rby[lane]};
+        /* the separation now, to first order in the angles (as normal_target) */
+        tb_vec2 moved = tb_sub(tb_add(sb->dp, tb_cross_sv(sb->da, rb[p])), tb_add(sa->dp, tb_cross_sv(sa->da, ra[p])));
+        float s = cp->base_separation[lane] + tb_dot(moved, n);
+        float target = fminf(rate * fmaxf(-cp->push_depth[lane] - s, 0.0f), push);
+        r[p] = cp->normal_mass[lane] > 0.0f ? push_speed(ua, ub, ra[p], rb[p], n) - target : 0.0f;
+      }
+      r[0] -= k[0][0] * acc[0] + k[0][1] * acc[1];
+      r[1] -= k[1][0] * acc[0] + k[1][1] * acc[1];
+      /* the mixed LCP x >= 0, K x + r >= 0, complementary, as solve_wide */
+      float x[2] = {0.0f, 0.0f};
+      if (c->block[lane] > 0.0f) {
+        float both0 = -(c->n11[lane] * r[0] + c->n12[lane] * r[1]),
+              both1 = -(c->n12[lane] * r[0] + c->n22[lane] * r[1]);
+        float only0 = -r[0] / k[0][0], only1 = -r[1] / k[1][1];
+        if (both0 >= 0.0f && both1 >= 0.0f) {
+          x[0] = both0;
+          x[1] = both1;
+        } else if (only0 >= 0.0f && r[1] + k[1][0] * only0 >= 0.0f) {
+          x[0] = only0;
+        } else if (only1 >= 0.0f && r[0] + k[0][1] * only1 >= 0.0f) {
+          x[1] = only1;
+        }
+      } else { /* one point, or two too close together: one after the other */
+        for (int p = 0; p < 2; ++p) {
+          if (!(c->p[p].normal_mass[lane] > 0.0f)) continue;
+          float rp = r[p] + (p == 1 ? k[1][0] * x[0] : 0.0f);
+          x[p] = fmaxf(-c->p[p].normal_mass[lane] * rp, 0.0f);
+        }
+      }
+      float ma = c->ma[lane], ja = c->ja[lane], mb = c->mb[lane], jb = c->jb[lane];
+      for (int p = 0; p < 2; ++p) {
+        tb_vec2 P = tb_scale(x[p] - acc[p], n);
+        acc[p] = x[p];
+        ua[0] -= ma * P.x;
+        ua[1] -= ma * P.y;
+        ua[2] -= ja * tb_cross(ra[p], P);
+        ub[0] += mb * P.x;
+        ub[1] += mb * P.y;
+        ub[2] += jb * tb_cross(rb[p], P);
+      }
+    }
 }
 
 /* ---- entry points ----------------------------------------------------------------- */

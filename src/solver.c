@@ -100,8 +100,15 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
   for (int i = 0; i < w->awake_count; ++i) {
     if (motions[i].flags & MOTION_FREE) continue;
     tb_solver_body* s = &states[i];
-    s->dp = tb_mul_add(s->dp, h, s->v);
-    float dw = h * s->w;
+    tb_vec2 v = s->v;
+    float omega = s->w;
+    if (ctx->push_velocities) {
+      const float* push = &ctx->push_velocities[3 * i];
+      v = (tb_vec2){v.x + push[0], v.y + push[1]};
+      omega += push[2];
+    }
+    s->dp = tb_mul_add(s->dp, h, v);
+    float dw = h * omega;
     s->da += dw;
     /* q <- normalise(q + h w perp(q)): the rotation the anchors see; the angle
      * itself is the exact scalar sum da */
@@ -224,6 +231,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, true);
     tb_contact_solver_solve(w, &ctx, true);
     tb_joint_tree_solve(w, &ctx, true);
+    tb_contact_solver_push_out(w, &ctx);
     integrate_positions(w, &ctx, motions);
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, false);
     tb_contact_solver_solve(w, &ctx, false);

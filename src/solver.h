@@ -52,6 +52,9 @@ typedef struct tb_step_context {
    * body that is not awake (static, or asleep). */
   tb_solver_body* states;
   int static_index;
+  /* (v.x, v.y, w) per solver body of the deep overlaps' push-out, added to
+   * the velocity in the position update; NULL in a step without deep overlap */
+  float* push_velocities;
 } tb_step_context;
 
 struct tb_world;

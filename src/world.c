@@ -231,6 +231,8 @@ tb_result tb_destroy_world(tb_world_id id) {
   free(w->step_contacts);
   free(w->constraints);
   free(w->wide);
+  free(w->deep_points);
+  free(w->push_velocities);
   free(w->step_joints);
   tb_joint_tree_free(&w->joint_tree);
   free(w->scratch);

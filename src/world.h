@@ -61,6 +61,10 @@ typedef struct tb_world {
   int constraint_capacity;
   void* wide; /* coloured blocks of four contacts */
   int wide_capacity, wide_count;
+  void* deep_points; /* contact points overlapping deeply this step (contact_solver.c) */
+  int deep_capacity, deep_count;
+  float* push_velocities; /* per solver body: the push-out's (v.x, v.y, w), momentum-free */
+  int push_capacity;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
   tb_joint_tree joint_tree;
@@ -134,6 +138,10 @@ bool tb_contact_solver_prepare(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_warm_start(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_reset(tb_world* w);
 void tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias);
+/* Pushes deeply overlapping points apart through momentum-free push
+ * velocities (ctx->push_velocities, NULL when no point is deep) that move the
+ * bodies in the next position update and are then dropped. */
+void tb_contact_solver_push_out(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_finish(tb_world* w, struct tb_step_context* ctx);
 /* Continuous collision (continuous.c): fast bodies and bullets stop at their
  * first time of impact. Returns the number of bodies swept. */
