@@ -212,28 +212,22 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
  * with its rotational stiffness 2 k a^2 (points at +-a), and summed over the
  * column the load wins near n = 12 at 30 Hz: tall stacks buckle slowly. So a
  * point carrying F (its last impulse over h: the warm start) is stiffened
- * until F compresses it at most TB_LOAD_COMPRESSION, or
- * TB_LOAD_COMPRESSION_SHARE of the thinner body's half-thickness when that is
- * less (the tilt stiffness k a^2 against a moment ~ m g a asks for k ~ 1 / a:
- * the same share of a box's size for every size), up to h omega =
+ * until F compresses it at most TB_LOAD_COMPRESSION, up to h omega =
  * TB_MAX_H_OMEGA. (The column of rotational springs is statically stable
  * while diag(k_i) - g L^T W L is positive definite, L summing the interface
  * tilts into block tilts and W the weight above each block: at 60 Hz and 4
- * substeps that holds to 21 boxes of 1 m, and since the margin scales as
- * omega^2 a / g, to about 3 of 2.5 cm at the cap: small bodies need more
- * substeps; stiffer caps jitter.) At the cap the soft
+ * substeps that holds to 21 boxes; stiffer caps jitter.) At the cap the soft
  * constraint is nearly rigid (mass scale 0.98 at damping ratio 10) with a
  * position bias of h omega / (2 zeta + h omega) = 7 % of the error per
  * substep. Against a static or kinematic body the base stiffness is twice as
  * high. */
 #define TB_LOAD_COMPRESSION 0.002f
-#define TB_LOAD_COMPRESSION_SHARE 0.004f
 #define TB_MAX_H_OMEGA 1.5f
 #define TB_TWO_PI (2.0f * 3.14159265358979f)
 
 /* The softness of four lanes: the base one (against a rigid body or not)
  * or, where load stiffening asks for more (need: the largest of the base
- * omega^2 and the points' F / (m_n compression)), a stiffer one.
+ * omega^2 and the points' F / (m_n TB_LOAD_COMPRESSION)), a stiffer one.
  * Few lanes are stiffened; each takes tb_make_softness. */
 static tb_f4 load_softness(const tb_step_context* ctx, tb_i4 rigid_other, tb_f4 omega, tb_f4 need,
                            tb_wide_contact* wc) {
@@ -294,8 +288,6 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
   tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI * 2.0f * ctx->contact_hertz), splat(TB_TWO_PI * ctx->contact_hertz));
   tb_f4 need = omega * omega;
-  tb_f4 thinnest = min4(LANES(ba, min_extent), LANES(bb, min_extent)); /* half-thickness */
-  tb_f4 compression = min4(splat(TB_LOAD_COMPRESSION), splat(TB_LOAD_COMPRESSION_SHARE) * thinnest);
   tb_f4 rn[2][2];    /* r x n of each point at A and B, for the block terms */
   tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
@@ -327,7 +319,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
     approach[p] = blend(used, nx * (vbx - vax) + ny * (vby - vay), zero);
     /* the load stiffening's need, point by point */
-    tb_f4 point_need = (normal_impulse * splat(ctx->inv_h)) / (normal_mass * compression);
+    tb_f4 point_need = (normal_impulse * splat(ctx->inv_h)) / (normal_mass * splat(TB_LOAD_COMPRESSION));
     need = blend(used & (normal_mass > zero) & (point_need > need), point_need, need);
   }
   /* the 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
