@@ -348,8 +348,9 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
    * one by one; one point alone: -s = F / (m_n omega^2)). */
   tb_f4 per_depth = splat(ctx->inv_h) / load_softness(ctx, rigid_other, omega, need, wc);
   tb_f4 a1 = wc->p[0].normal_impulse, a2 = wc->p[1].normal_impulse, k12_block = blend(block, k12, zero);
-  wc->p[0].push_depth = (k11 * a1 + k12_block * a2) * per_depth + splat(TB_DEEP_OVERLAP);
-  wc->p[1].push_depth = (k12_block * a1 + k22 * a2) * per_depth + splat(TB_DEEP_OVERLAP);
+  /* max4 with zero also turns 0 * inf (a tiny contact_hertz) into 0 */
+  wc->p[0].push_depth = max4((k11 * a1 + k12_block * a2) * per_depth, zero) + splat(TB_DEEP_OVERLAP);
+  wc->p[1].push_depth = max4((k12_block * a1 + k22 * a2) * per_depth, zero) + splat(TB_DEEP_OVERLAP);
   for (int lane = 0; lane < 4; ++lane) {
     if (k[lane] < 0) continue;
     tb_contact_constraint* cc = &constraints(w)[k[lane]];

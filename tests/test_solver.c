@@ -901,6 +901,36 @@ END_TEST
 
 /* Whether msg names `name`; underscores and spaces count as the same, so
  * "contact damping ratio" names damping_ratio. */
+/* The extremes of the valid contact tuning stay finite: a box created 20 cm
+ * into the ground (so the push-out runs) with contact_hertz 1e-20 (omega^2
+ * underflows to a denormal; the push depth divides by it) and 1e6 (capped at
+ * a quarter of the substep rate), each with push speed 0 and 1e3. After 2 s
+ * the box is finite, at rest and out of the ground to within 1 cm (load
+ * stiffening holds it even when the base spring is nearly nothing). */
+START_TEST(extreme_contact_tuning_stays_finite) {
+  const float hertz[2] = {1e-20f, 1e6f}, push[2] = {0.0f, 1e3f};
+  for (int k = 0; k < 4; ++k) {
+    tb_world_def def = tb_default_world_def();
+    def.gravity = (tb_vec2){0.0f, (float)-G};
+    def.contact_hertz = hertz[k / 2];
+    def.contact_push_max_velocity = push[k % 2];
+    tb_world_id w = tb_create_world(&def);
+    ck_assert(!tb_world_id_is_null(w));
+    ground_box(w, 5.0f, 0.6f);
+    tb_shape_def sd = material(1.0f, 0.6f, 0.0f);
+    tb_body_id box = box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 0.3f}, 0.0f, 0.5f, 0.5f, &sd);
+    step(w, 120);
+    tb_vec2 p = tb_body_get_position(box), v = tb_body_get_linear_velocity(box);
+    fprintf(stderr, "contact_hertz %g, push %g: box at y %.4f, v (%.2e, %.2e)\n", (double)hertz[k / 2],
+            (double)push[k % 2], (double)p.y, (double)v.x, (double)v.y);
+    ck_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y));
+    ck_assert_msg(fabs(v.x) < 0.01 && fabs(v.y) < 0.01, "box moves at (%g, %g)", (double)v.x, (double)v.y);
+    if (push[k % 2] > 0.0f) ck_assert_msg(p.y > 0.49f, "box still %g m in the ground", 0.5 - (double)p.y);
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
 static bool names(const char* msg, const char* name) {
   char m[512], n[128];
   size_t i;
@@ -1095,6 +1125,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, stack_of_30_stands);
   tcase_add_test(tc, mass_ratio_400_to_1);
   tcase_add_test(tc, overlapping_column_separates_without_launch);
+  tcase_add_test(tc, extreme_contact_tuning_stays_finite);
   tcase_add_test(tc, more_contacts_than_colours);
   tcase_add_test(tc, simultaneous_elastic_strike);
   suite_add_tcase(s, tc);
