@@ -51,10 +51,10 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
 
 #define TB_COLORS 24
 
-/* Deep overlap (bodies created or moved into each other, or crushed by a load
- * the soft contact cannot hold): the soft push of a point only grows down to
- * TB_DEEP_OVERLAP; deeper than that, a separate momentum-free push-out moves
- * the bodies apart (see tb_contact_solver_push_out). */
+/* Deep overlap (bodies created or moved into each other): the soft push of a
+ * point only grows down to the depth its load explains plus TB_DEEP_OVERLAP;
+ * deeper than that, a separate momentum-free push-out moves the bodies apart
+ * (see tb_contact_solver_push_out). */
 #define TB_DEEP_OVERLAP (2.0f * TB_LINEAR_SLOP)
 #define TB_PUSH_OUT_RATE 0.2f /* share of the excess depth removed per substep */
 #define TB_PUSH_OUT_SWEEPS 4
@@ -395,9 +395,9 @@ static void color_constraints(tb_world* w, const tb_step_context* ctx, int* colo
   }
 }
 
-/* The deep points of the step, and room for the push velocities when there
+/* The deep contacts of the step, and room for the push velocities when there
  * are any. */
-static bool collect_deep_points(tb_world* w, tb_step_context* ctx) {
+static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
   const tb_wide_contact* wide = (const tb_wide_contact*)w->wide;
   w->deep_count = 0;
   for (int b = 0; b < w->wide_count; ++b)
@@ -409,9 +409,9 @@ static bool collect_deep_points(tb_world* w, tb_step_context* ctx) {
             wp->base_separation[lane] + wp->push_depth[lane] < 0.5f * TB_DEEP_OVERLAP && wp->normal_mass[lane] > 0.0f;
       }
       if (!deep) continue;
-      if (!tb_array_reserve(&w->deep_points, &w->deep_capacity, w->deep_count + 1, sizeof(tb_deep_contact)))
+      if (!tb_array_reserve(&w->deep_contacts, &w->deep_capacity, w->deep_count + 1, sizeof(tb_deep_contact)))
         return false;
-      ((tb_deep_contact*)w->deep_points)[w->deep_count++] = (tb_deep_contact){b, lane, {0.0f, 0.0f}};
+      ((tb_deep_contact*)w->deep_contacts)[w->deep_count++] = (tb_deep_contact){b, lane, {0.0f, 0.0f}};
     }
   ctx->push_velocities = NULL;
   if (w->deep_count == 0) return true;
@@ -466,7 +466,7 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
     for (int lane = 0; lane < 4; ++lane)
       if (k[lane] < 0) clear_lane(&wide[b], lane, ctx->static_index);
   }
-  return collect_deep_points(w, ctx);
+  return collect_deep_contacts(w, ctx);
 }
 
 /* ---- wide solve ------------------------------------------------------------ */
@@ -607,15 +607,6 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
 
 /* ---- deep overlap push-out ----------------------------------------------------- */
 
-/* Split impulse (Catto, GDC 2006; Bullet): each deep point is pushed apart in
- * velocities of its own, u, that move the bodies in this substep's position
- * update and are then dropped, so the push leaves no momentum. The velocity
- * solve's soft push would: its impulse is real, and in a pile the relative
- * pushes add up body by body (a fifth box up a column rises at five times
- * the cap) faster than the one relax sweep takes them back out. The target is
- * the share TB_PUSH_OUT_RATE of the depth beyond TB_DEEP_OVERLAP per substep,
- * at most contact_push_max_velocity apart, with impulses >= 0 (Gauss-Seidel,
- * accumulated over the sweeps of one substep). */
 /* The push velocity of B relative to A at a point, along n. */
 static float push_speed(const float* ua, const float* ub, tb_vec2 ra, tb_vec2 rb, tb_vec2 n) {
   tb_vec2 du = tb_sub(tb_add((tb_vec2){ub[0], ub[1]}, tb_cross_sv(ub[2], rb)),
@@ -623,11 +614,20 @@ static float push_speed(const float* ua, const float* ub, tb_vec2 ra, tb_vec2 rb
   return tb_dot(du, n);
 }
 
+/* Split impulse (Catto, GDC 2006; Bullet): each deep point is pushed apart in
+ * velocities of its own, u, that move the bodies in this substep's position
+ * update and are then dropped, so the push leaves no momentum. The velocity
+ * solve's soft push would: its impulse is real, and in a pile the relative
+ * pushes add up body by body (a fifth box up a column rises at five times
+ * the cap) faster than the one relax sweep takes them back out. The target is
+ * the share TB_PUSH_OUT_RATE of the depth beyond the push depth per substep,
+ * at most contact_push_max_velocity apart, with impulses >= 0 (Gauss-Seidel,
+ * accumulated over the sweeps of one substep). */
 void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
   if (!ctx->push_velocities) return;
   float* u = ctx->push_velocities;
   memset(u, 0, (size_t)(3 * (ctx->static_index + 1)) * sizeof(float));
-  tb_deep_contact* deep = (tb_deep_contact*)w->deep_points;
+  tb_deep_contact* deep = (tb_deep_contact*)w->deep_contacts;
   const tb_wide_contact* wide = (const tb_wide_contact*)w->wide;
   const tb_solver_body* states = ctx->states;
   float push = ctx->contact_push_max_velocity, rate = TB_PUSH_OUT_RATE * ctx->inv_h;

@@ -231,7 +231,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   free(w->step_contacts);
   free(w->constraints);
   free(w->wide);
-  free(w->deep_points);
+  free(w->deep_contacts);
   free(w->push_velocities);
   free(w->step_joints);
   tb_joint_tree_free(&w->joint_tree);

@@ -61,7 +61,7 @@ typedef struct tb_world {
   int constraint_capacity;
   void* wide; /* coloured blocks of four contacts */
   int wide_capacity, wide_count;
-  void* deep_points; /* contact points overlapping deeply this step (contact_solver.c) */
+  void* deep_contacts; /* contacts with a point overlapping deeply this step (contact_solver.c) */
   int deep_capacity, deep_count;
   float* push_velocities; /* per solver body: the push-out's (v.x, v.y, w), momentum-free */
   int push_capacity;
