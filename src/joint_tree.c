@@ -25,7 +25,24 @@
  * nodes (their velocity is fixed), so a bridge pinned at both ends is a tree.
  * A group of jointed bodies with a loop, or with a joint on a dynamic body
  * that cannot turn (zero inverse inertia), stays with Gauss-Seidel. Computed in double: the
- * blocks of a gram body next to a tonne body span many decades. */
+ * blocks of a gram body next to a tonne body span many decades.
+ *
+ * Geometric stiffness (Andrews, Teichmann and Kry 2017). A joint's force f at
+ * arm r turns its body back when the body turns by a: the torque r(a) x f has
+ * d/da = -r . f, a stiffness k = r . f (> 0 when f pulls the anchor outward, a
+ * taut chain). The rows hold the anchors' velocities but the arms are those of
+ * the substep's start, so that restoring torque is integrated explicitly: a
+ * light link between heavy loads turns with omega^2 = k / I and the substep is
+ * unstable once h omega > 2 (a 670:1 ball shook its chain apart at 4
+ * substeps). Taking the torque at the substep's end, linearised, adds h^2 k to
+ * the body's inertia in M dv = J^T dl (k from the rows' accumulated impulse p:
+ * h^2 k = h r . p). The warm start already turned the body by I^-1 tau with
+ * the plain inertia, so the body's right-hand side takes -h^2 k I^-1 tau (the
+ * total, not the increment, sees the stiffer inertia). Only the excess over
+ * I is added, h^2 k - I when positive: the mode stays at h omega <= 1, and a
+ * body whose mode is already stable (a pendulum: h^2 k / I ~ 1e-4) is solved
+ * as before; the slowed turn would otherwise lengthen its period by that
+ * fraction. The relax pass, which only removes the bias velocity, keeps I. */
 #include "joint_tree.h"
 
 #include <math.h>
@@ -46,12 +63,12 @@
 #define TB_TREE_RELAX_COMPLIANCE 1e-6
 
 typedef struct tb_jt_node {
-  int parent;  /* node index, -1 for a root */
-  int dof;     /* 3 for a body, the row count for a joint */
-  int ref;     /* body: solver index; joint: joint index */
-  int first;   /* body: its first edge in tree->edges */
-  int count;   /* body: its edge count */
-  int a, b;    /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
+  int parent;      /* node index, -1 for a root */
+  int dof;         /* 3 for a body, the row count for a joint */
+  int ref;         /* body: solver index; joint: joint index */
+  int first;       /* body: its first edge in tree->edges */
+  int count;       /* body: its edge count */
+  int a, b;        /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
   double d[3][3];  /* D, then D^-1 */
   double hp[3][3]; /* H_{i,parent}: dof x the parent's dof */
   double y[3];     /* right-hand side, then the solution */
@@ -273,20 +290,28 @@ static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double 
 void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   if (t->node_count == 0) return;
-  double g = use_bias ? (double)t->softness.impulse_scale / (double)t->softness.mass_scale
-                      : TB_TREE_RELAX_COMPLIANCE;
+  double g = use_bias ? (double)t->softness.impulse_scale / (double)t->softness.mass_scale : TB_TREE_RELAX_COMPLIANCE;
   double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
-  for (int i = 0; i < t->node_count; ++i) {
+  for (int i = t->body_nodes; i < t->node_count; ++i) init_joint(w, ctx, &t->nodes[i], g, bias);
+  for (int i = 0; i < t->body_nodes; ++i) {
     tb_jt_node* n = &t->nodes[i];
-    if (i < t->body_nodes) {
-      const tb_solver_body* s = &ctx->states[n->ref];
-      memset(n->d, 0, sizeof n->d);
-      n->d[0][0] = n->d[1][1] = 1.0 / (double)s->inv_mass;
-      n->d[2][2] = 1.0 / (double)s->inv_inertia;
-      n->y[0] = n->y[1] = n->y[2] = 0.0;
-    } else {
-      init_joint(w, ctx, n, g, bias);
+    const tb_solver_body* s = &ctx->states[n->ref];
+    double twist = 0.0, torque = 0.0; /* h k (the rows' r . p) and tau */
+    for (int e = 0; e < n->count; ++e) {
+      const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
+      bool side_a = joint->a == i;
+      twist += side_a ? joint->rows.twist_a : joint->rows.twist_b;
+      for (int r = 0; r < joint->dof; ++r)
+        torque += side_a ? -(double)joint->rows.ja[r][2] * *joint->rows.impulse[r]
+                         : (double)joint->rows.jb[r][2] * *joint->rows.impulse[r];
     }
+    /* geometric stiffness beyond the inertia (file comment); tau: the warm start's torque */
+    double stiff = use_bias ? fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0) : 0.0;
+    memset(n->d, 0, sizeof n->d);
+    n->d[0][0] = n->d[1][1] = 1.0 / (double)s->inv_mass;
+    n->d[2][2] = 1.0 / (double)s->inv_inertia + stiff;
+    n->y[0] = n->y[1] = 0.0;
+    n->y[2] = -stiff * (double)s->inv_inertia * torque;
   }
   /* H_{i,parent} of every child */
   for (int i = 0; i < t->node_count; ++i) {
@@ -334,25 +359,15 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
       for (int s = 0; s < n->dof; ++s) n->y[r] += n->d[r][s] * rhs[s];
     }
   }
-  /* the impulses: +jb dl on B, -ja dl on A */
+  /* the velocity changes of the bodies and the impulses of the rows */
+  for (int i = 0; i < t->body_nodes; ++i) {
+    const tb_jt_node* n = &t->nodes[i];
+    tb_solver_body* s = &ctx->states[n->ref];
+    s->v = (tb_vec2){s->v.x + (float)n->y[0], s->v.y + (float)n->y[1]};
+    s->w += (float)n->y[2];
+  }
   for (int i = t->body_nodes; i < t->node_count; ++i) {
     const tb_jt_node* n = &t->nodes[i];
-    const tb_joint* j = tb_joint_at(w, n->ref);
-    tb_solver_body* a = &ctx->states[j->solver_a];
-    tb_solver_body* b = &ctx->states[j->solver_b];
-    for (int r = 0; r < n->dof; ++r) {
-      float dl = (float)n->y[r];
-      *n->rows.impulse[r] += dl;
-      const float* ja = n->rows.ja[r];
-      const float* jb = n->rows.jb[r];
-      if (j->solver_a != ctx->static_index) {
-        a->v = (tb_vec2){a->v.x - a->inv_mass * ja[0] * dl, a->v.y - a->inv_mass * ja[1] * dl};
-        a->w -= a->inv_inertia * ja[2] * dl;
-      }
-      if (j->solver_b != ctx->static_index) {
-        b->v = (tb_vec2){b->v.x + b->inv_mass * jb[0] * dl, b->v.y + b->inv_mass * jb[1] * dl};
-        b->w += b->inv_inertia * jb[2] * dl;
-      }
-    }
+    for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] += (float)n->y[r];
   }
 }

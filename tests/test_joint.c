@@ -305,6 +305,64 @@ START_TEST(hundred_link_chain_whip) {
 }
 END_TEST
 
+/* A ball of 670 link masses swinging on 20 light links (the stress suite's
+ * ball and chain, shorter). At the bottom of the swing the tension is about
+ * T = 3 M g. Turned by a small angle, a link pinned at both ends (arms l) is
+ * turned back by that tension with a stiffness k = 2 T l, against its own
+ * inertia I about its centre: a mode of omega^2 = k / I, here
+ * h^2 k / I = 2 * 3 * 670 * 10 * 0.25 / 0.0288 / 240^2 ~ 6 at the default 4
+ * substeps. The substep integrates that turn explicitly, which is stable only
+ * while h omega < 2: without the tree's geometric stiffness (joint_tree.c) the
+ * chain shook itself apart (gaps of metres). Bound: the links' radius, 5 cm,
+ * so the rounded ends of neighbours still overlap; the ball swings through the
+ * bottom of its arc. */
+START_TEST(heavy_ball_on_light_chain) {
+  tb_world_id w = tbt_world(0.0f, -10.0f);
+  const float half = 0.25f, radius = 0.05f, ball_radius = 0.5f, y = 20.0f;
+  tb_body_id prev = static_body(w, (tb_vec2){0.0f, y});
+  tb_shape_def sd = tb_default_shape_def();
+  sd.filter.group_index = -1;
+  tb_capsule cap = {{-half, 0.0f}, {half, 0.0f}, radius};
+  float link_mass = tb_compute_capsule_mass(&cap, sd.density).mass;
+  tb_joint_id joints[21];
+  tb_body_id ball = {0};
+  for (int i = 0; i <= 20; ++i) {
+    bool last = i == 20;
+    tb_body_def bd = tb_default_body_def();
+    bd.type = TB_DYNAMIC_BODY;
+    bd.position = (tb_vec2){2.0f * half * (float)i + (last ? ball_radius : half), y};
+    tb_body_id b = tb_create_body(w, &bd);
+    if (last) {
+      tb_shape_def bs = sd;
+      bs.density = 670.0f * link_mass / (PI * ball_radius * ball_radius);
+      tb_circle c = {{0.0f, 0.0f}, ball_radius};
+      ck_assert(!tb_shape_id_is_null(tb_create_circle_shape(b, &bs, &c)));
+      ball = b;
+    } else {
+      ck_assert(!tb_shape_id_is_null(tb_create_capsule_shape(b, &sd, &cap)));
+    }
+    tb_revolute_joint_def jd = tb_default_revolute_joint_def();
+    jd.body_a = prev;
+    jd.body_b = b;
+    jd.local_anchor_a = i == 0 ? (tb_vec2){0.0f, 0.0f} : (tb_vec2){half, 0.0f};
+    jd.local_anchor_b = (tb_vec2){last ? -ball_radius : -half, 0.0f};
+    joints[i] = tb_create_revolute_joint(w, &jd);
+    ck_assert(!tb_joint_id_is_null(joints[i]));
+    prev = b;
+  }
+  double max_gap = 0.0, lowest = 1e9;
+  for (int s = 0; s < 300; ++s) {
+    ck_assert_int_eq(tb_world_step(w, DT, 4), TB_OK);
+    for (int i = 0; i <= 20; ++i) max_gap = fmax(max_gap, joint_gap(joints[i]));
+    lowest = fmin(lowest, tb_body_get_position(ball).y);
+  }
+  report("ball and chain, 670:1: max gap %.3e m; the ball fell %.2f m", max_gap, y - lowest);
+  ck_assert_double_gt(y - lowest, 10.0);
+  ck_assert_double_lt(max_gap, radius);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* ---- revolute limits, motor, spring ------------------------------------------ */
 
 /* A lever of 2 m x 0.2 m (40 kg at density 100) pinned at its left end to a
@@ -1584,6 +1642,7 @@ static Suite* joint_suite(void) {
   tcase_add_test(physics, pendulum_period_small_and_large);
   tcase_add_test(physics, hundred_link_chain_stays_connected);
   tcase_add_test(physics, hundred_link_chain_whip);
+  tcase_add_test(physics, heavy_ball_on_light_chain);
   tcase_add_test(physics, revolute_limit_holds_heavy_lever);
   tcase_add_test(physics, revolute_motor_reaches_speed);
   tcase_add_test(physics, revolute_motor_stalls_at_max_torque);
