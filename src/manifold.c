@@ -500,34 +500,42 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
   if (outside || (leaves && fp.s > TB_CORE_GAP_TOLERANCE)) {
     float fr, fi;
     closest_fractions(r1, r2, p[0], p[1], &fr, &fi);
-    if (outside || ((fr == 0.0f || fr == 1.0f) && (fi == 0.0f || fi == 1.0f))) {
+    /* rounded corners meet only where the incident vertex lies outside the
+     * slab; one within the tolerance of a side plane is clipped, whichever
+     * side of the plane its rounding put the reference's closest point */
+    float ui = u[0] + fi * (u[1] - u[0]);
+    bool corner = (fr == 0.0f || fr == 1.0f) && (fi == 0.0f || fi == 1.0f) && (ui < -e || ui > len + e);
+    if (outside || corner) {
       closest_contact(m, &fp, fr, fi);
       return;
     }
   }
   float rr = fp.ref->radius, ri = fp.inc->radius;
-  tb_vec2 first = {0.0f, 0.0f};
   for (int k = 0; k < 2; ++k) {
     tb_vec2 q = p[k];
     uint32_t id;
-    if (u[k] < 0.0f) { /* cut at the side plane through r1 (the other end is inside) */
+    /* A vertex beyond a side plane is cut back to it when the other end is
+     * inside the slab. When the other end lies on that plane too (within the
+     * tolerance), the edge meets the slab in that end alone, whichever side
+     * of the plane rounding put either: a vertex within the tolerance stays as
+     * it is, one beyond it is dropped (a cut there would divide by a rounding
+     * difference, or add a point on top of the other end, which makes the
+     * solver's 2x2 block singular). */
+    bool cut_low = u[k] < 0.0f && u[1 - k] > e;
+    bool cut_high = u[k] > len && u[1 - k] < len - e;
+    if (cut_low) { /* cut at the side plane through r1 */
       q = tb_lerp(p[k], p[1 - k], -u[k] / (u[1 - k] - u[k]));
       id = pair_id(&fp, fp.i1, TB_FEATURE_VERTEX, fp.j1, TB_FEATURE_EDGE);
-    } else if (u[k] > len) {
+    } else if (cut_high) {
       q = tb_lerp(p[k], p[1 - k], (len - u[k]) / (u[1 - k] - u[k]));
       id = pair_id(&fp, fp.i2, TB_FEATURE_VERTEX, fp.j1, TB_FEATURE_EDGE);
     } else {
+      if (u[k] < -e || u[k] > len + e) continue;
       id = pair_id(&fp, fp.i1, TB_FEATURE_EDGE, k == 0 ? fp.j1 : fp.j2, TB_FEATURE_VERTEX);
     }
     float sq = tb_dot(fp.n, tb_sub(q, r1)); /* core separation of this point */
     float sep = sq - rr - ri;
     if (!(sep < TB_SPECULATIVE_DISTANCE)) continue;
-    /* an incident edge that meets the slab in a single point (one vertex on a
-     * side plane, the other outside) clips to that vertex twice: keep one, as
-     * the swapped order does (two coincident points make the solver's 2x2
-     * block singular) */
-    if (m->count == 1 && tb_distance_sq(q, first) <= 1e-12f * (1.0f + tb_length_sq(q))) continue;
-    first = q;
     /* reference surface at q - sq n + rr n, incident surface at q - ri n */
     add_point(m, tb_mul_add(q, 0.5f * (rr - sq - ri), fp.n), sep, id);
   }

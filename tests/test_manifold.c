@@ -668,6 +668,51 @@ START_TEST(swapping_mirrors_the_manifold) {
 }
 END_TEST
 
+/* Three capsule pairs the manifold fuzzer found (fuzz/corpus/manifold/
+ * swap_*): deep overlaps whose incident capsule core ends on a side plane of
+ * the reference core's slab, to within rounding. Depending on the order, that
+ * end rounded just inside or just outside: a cut through a plane both ends
+ * touched divided 0 by 0 (two points one way, none the other); the closest
+ * points fell on a vertex one way and on the edge the other (two points
+ * against one); the edge that leaves the slab through that end was cut back to
+ * 2e-5 m from it one way (two nearly coincident points, a near-singular block
+ * for the solver) and met at that end alone the other. Both orders must give
+ * the same points: the first two cover the reference face (two points), the
+ * third meets the slab in its end alone (one). */
+START_TEST(capsule_core_on_a_side_plane_swaps) {
+  const struct {
+    tb_capsule a, b;
+    tb_transform xf;
+  } cases[3] = {
+      {{{0.929411769f, 0.929411769f}, {0.929411769f, 0.984313726f}, 0.992235243f},
+       {{0.984313726f, 0.984313726f}, {1.48431373f, 0.984313726f}, 0.992235243f},
+       {{3.93725491f, 3.93725491f}, {-0.999966264f, -0.00821113121f}}},
+      {{{0.926848292f, -0.250019073f}, {0.58431375f, 0.58431375f}, 0.794235289f},
+       {{0.58431375f, 0.882352948f}, {0.882352948f, 0.882352948f}, 0.941764712f},
+       {{3.52941179f, 3.52941179f}, {-0.94984287f, 0.312727481f}}},
+      {{{0.583093047f, 0.58431375f}, {-0.250019073f, 0.585656524f}, 0.794235289f},
+       {{0.58431375f, 0.279621601f}, {0.58431375f, 0.58431375f}, 0.794235289f},
+       {{2.337255f, 2.337255f}, {-0.294571728f, 0.955629349f}}},
+  };
+  const int count[3] = {2, 2, 1};
+  for (int k = 0; k < 3; ++k) {
+    tb_manifold m = tb_collide_capsules(&cases[k].a, cases[k].xf, &cases[k].b, cases[k].xf);
+    tb_manifold s = tb_collide_capsules(&cases[k].b, cases[k].xf, &cases[k].a, cases[k].xf);
+    check_sane(&m);
+    check_sane(&s);
+    ck_assert_int_eq(m.point_count, count[k]);
+    ck_assert_int_eq(s.point_count, count[k]);
+    ck_assert(fabs(m.normal.x + s.normal.x) < 1e-5 && fabs(m.normal.y + s.normal.y) < 1e-5);
+    for (int i = 0; i < count[k]; ++i) {
+      int j = nearest_point(&s, m.points[i].point.x, m.points[i].point.y);
+      ck_assert_double_lt(hypot(s.points[j].point.x - m.points[i].point.x, s.points[j].point.y - m.points[i].point.y),
+                          1e-5);
+      ck_assert_double_eq_tol(s.points[j].separation, m.points[i].separation, 1e-5);
+    }
+  }
+}
+END_TEST
+
 /* Positions on a 2^-10 m grid are exact both near the origin and 1e4 m away
  * (a float's spacing there is 2^-10), so both runs see the same geometry and
  * any difference is the engine's own rounding. Off the grid, merely storing
@@ -737,6 +782,7 @@ static Suite* manifold_suite(void) {
   tcase_set_timeout(tr, 60);
   tcase_add_test(tr, random_configurations_are_sane_and_exact);
   tcase_add_test(tr, swapping_mirrors_the_manifold);
+  tcase_add_test(tr, capsule_core_on_a_side_plane_swaps);
   tcase_add_test(tr, far_from_origin);
   suite_add_tcase(s, tr);
   return s;
