@@ -502,7 +502,11 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
     closest_fractions(r1, r2, p[0], p[1], &fr, &fi);
     /* rounded corners meet only where the incident vertex lies outside the
      * slab; one within the tolerance of a side plane is clipped, whichever
-     * side of the plane its rounding put the reference's closest point */
+     * side of the plane its rounding put the reference's closest point. (The
+     * clip below still cuts at the plane itself, so where a grazing incident
+     * edge crosses the tolerance the separation jumps by tolerance / slope;
+     * cutting at the widened plane instead removed the jump but changed how
+     * flush boxes far from the origin track the same boxes at it.) */
     float ui = u[0] + fi * (u[1] - u[0]);
     bool corner = (fr == 0.0f || fr == 1.0f) && (fi == 0.0f || fi == 1.0f) && (ui < -e || ui > len + e);
     if (outside || corner) {
