@@ -173,6 +173,9 @@ static bool has_point(const tb_manifold* m, tb_vec2 p, float tol) {
   return false;
 }
 
+/* How far apart the two orders' points may be (file comment). */
+#define SWAP_POINT_TOL 1e-4f
+
 /* Points closer than tol are one contact: a clip at the edge of a tolerance
  * band may add a second point on top of the first in one order only (the
  * solver takes such a pair one point after the other). */
@@ -184,12 +187,14 @@ static int distinct_points(const tb_manifold* m, float tol) {
 }
 
 /* How far the manifold's points (and, in normal_spread, its normal's
- * components) move when A turns or shifts by a few rounding units. The two orders compute in different frames, so their
- * inputs differ by about that much; where the answer is ill-conditioned it moves further (a clip point on an incident
- * edge that crosses a side plane at a grazing angle amplifies a rounding of 1e-6 m a few hundred times), and the
- * swapped order's points are allowed twice that far off (the moves probe six directions, the other order's rounding may
- * lie between them); where a move changes the point count the configuration sits on a discontinuity and the points are
- * not compared. */
+ * components) move when A turns or shifts by a few rounding units. The two
+ * orders compute in different frames, so their inputs differ by about that
+ * much; where the answer is ill-conditioned it moves further (a clip point on
+ * an incident edge that crosses a side plane at a grazing angle amplifies a
+ * rounding of 1e-6 m a few hundred times), and the swapped order's points are
+ * allowed twice that far off (the moves probe six directions, the other
+ * order's rounding may lie between them); where a move changes the point count
+ * the configuration sits on a discontinuity and the points are not compared. */
 static const float rounding_moves[6][3] = {/* turn (rad), shift x, shift y (m) */
                                            {4e-6f, 0.0f, 0.0f},  {-4e-6f, 0.0f, 0.0f}, {0.0f, 4e-6f, 0.0f},
                                            {0.0f, -4e-6f, 0.0f}, {0.0f, 0.0f, 4e-6f},  {0.0f, 0.0f, -4e-6f}};
@@ -207,7 +212,8 @@ static float rounding_spread(const shape* a, tb_transform xa, const shape* b, tb
   *normal_spread = 0.0f;
   for (int k = 0; k < 6; ++k) {
     tb_manifold p = moved_collide(a, xa, b, xb, k);
-    if (distinct_points(&p, 1e-4f) != distinct_points(m, 1e-4f)) return INFINITY; /* at a discontinuity */
+    if (distinct_points(&p, SWAP_POINT_TOL) != distinct_points(m, SWAP_POINT_TOL))
+      return INFINITY; /* at a discontinuity */
     if (m->point_count > 0)
       *normal_spread = fmaxf(*normal_spread, fmaxf(fabsf(p.normal.x - m->normal.x), fabsf(p.normal.y - m->normal.y)));
     for (int i = 0; i < m->point_count; ++i) {
@@ -228,7 +234,7 @@ static float rounding_spread(const shape* a, tb_transform xa, const shape* b, tb
 static bool count_within_rounding(const shape* a, tb_transform xa, const shape* b, tb_transform xb, int count) {
   for (int k = 0; k < 6; ++k) {
     tb_manifold p = moved_collide(a, xa, b, xb, k);
-    if (distinct_points(&p, 1e-4f) == count) return true;
+    if (distinct_points(&p, SWAP_POINT_TOL) == count) return true;
   }
   return false;
 }
@@ -249,7 +255,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (pair[0] == pair[1]) {
     tb_manifold r = collide(&b, xb, &a, xa);
     check_manifold(&r, "b-a");
-    const float tol = 1e-4f;
+    const float tol = SWAP_POINT_TOL;
     /* the deepest point of either order gives the core distance */
     float deepest = INFINITY;
     for (int i = 0; i < m.point_count; ++i) deepest = fminf(deepest, m.points[i].separation);
