@@ -274,11 +274,15 @@ const char* tb_check_polygon(const tb_polygon* p) {
       return "polygon normals are not the outward normals of their edges (build it with tb_make_polygon)";
   }
   if (wraps != 1) return "polygon is not convex: its edges wind more than once (build it with tb_make_polygon)";
-  /* the centroid lies inside (the continuous pass and the chain manifolds use it) */
+  /* the centroid lies inside (the continuous pass and the chain manifolds use
+   * it); in double: a float difference rounds by half a step of the
+   * coordinates, more than a sliver's width far out (0.25 m at 4e6 m), and
+   * refused polygons tb_make_polygon had made */
   if (!tb_vec_finite(p->centroid)) return "polygon centroid is not finite (build it with tb_make_polygon)";
   for (int i = 0; i < n; ++i) {
-    if (tb_dot(p->normals[i], tb_sub(p->centroid, p->vertices[i])) >= 0.0f)
-      return "polygon centroid lies outside the polygon (build it with tb_make_polygon)";
+    double side = (double)p->normals[i].x * ((double)p->centroid.x - p->vertices[i].x) +
+                  (double)p->normals[i].y * ((double)p->centroid.y - p->vertices[i].y);
+    if (!(side < 0.0)) return "polygon centroid lies outside the polygon (build it with tb_make_polygon)";
   }
   return NULL;
 }

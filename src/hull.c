@@ -113,10 +113,20 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
   } else {
     double area = 0.0;
     for (int i = 1; i + 1 < h; ++i) area += 0.5 * tb_cross(tb_sub(hull[i], hull[0]), tb_sub(hull[i + 1], hull[0]));
-    if (area < (double)TB_LINEAR_SLOP * TB_LINEAR_SLOP)
+    tb_polygon made;
+    if (area < (double)TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
       r = tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON, "tb_make_polygon: hull area %g m^2 is near zero", area);
-    else
-      finish_polygon(out, hull, h, radius);
+    } else {
+      finish_polygon(&made, hull, h, radius);
+      /* a sliver far out (7e6 m long, 0.4 m wide) can have its float centroid
+       * rounded outside it: refuse what no shape would accept, as tb_make_box */
+      const char* why = tb_check_polygon(&made);
+      if (why == NULL)
+        *out = made;
+      else
+        r = tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON, "tb_make_polygon: the hull is too thin for float precision: %s",
+                    why);
+    }
   }
   free(pts);
   return r;

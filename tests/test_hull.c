@@ -144,7 +144,25 @@ START_TEST(boxes) {
 }
 END_TEST
 
-static Suite* hull_suite(void) {
+/* Slivers 7e6 m long and 0.39 m wide (found by the hull fuzzer). Its float
+ * centroid lies inside in exact arithmetic, but a float difference of
+ * coordinates near 4e6 m rounds by 0.25 m: the validation that the mass and
+ * shape functions run refused the polygon tb_make_polygon had made. */
+START_TEST(far_sliver_is_accepted_everywhere) {
+  const tb_vec2 points[3] = {
+      {-0x1.95944ep+22f, -0x1.959594p+21f}, {0x1.19594p-130f, 0.0f}, {0x1.94p-2f, 0x1.fd9594p-124f}};
+  tb_polygon p;
+  ck_assert_int_eq(tb_make_polygon(points, 3, 0.0f, &p), TB_OK);
+  tb_mass_data md = tb_compute_polygon_mass(&p, 1.0f);
+  ck_assert_msg(md.mass > 0.0f, "%s", tb_last_error());
+  /* with the far point lower (y -6153573 instead of -3322546.5) the float centroid lies
+   * 0.2 m outside in exact arithmetic too: refused, not handed out */
+  const tb_vec2 thinner[3] = {{points[0].x, -0x1.779594p+22f}, points[1], points[2]};
+  ck_assert_int_eq(tb_make_polygon(thinner, 3, 0.0f, &p), TB_ERR_DEGENERATE_POLYGON);
+}
+END_TEST
+
+Suite* hull_suite(void) {
   Suite* s = suite_create("hull");
   TCase* tc = tcase_create("hull");
   tcase_add_test(tc, square_from_shuffled_points_with_interior);
@@ -154,6 +172,7 @@ static Suite* hull_suite(void) {
   tcase_add_test(tc, vertex_limit_is_an_error_not_a_cut);
   tcase_add_test(tc, random_hulls_contain_their_points);
   tcase_add_test(tc, boxes);
+  tcase_add_test(tc, far_sliver_is_accepted_everywhere);
   suite_add_tcase(s, tc);
   return s;
 }
