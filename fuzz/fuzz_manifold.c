@@ -212,10 +212,11 @@ static float rounding_spread(const shape* a, tb_transform xa, const shape* b, tb
   *normal_spread = 0.0f;
   for (int k = 0; k < 6; ++k) {
     tb_manifold p = moved_collide(a, xa, b, xb, k);
-    if (distinct_points(&p, SWAP_POINT_TOL) != distinct_points(m, SWAP_POINT_TOL))
-      return INFINITY; /* at a discontinuity */
-    if (m->point_count > 0)
+    /* every move probes the normal, also after one that changed the count */
+    if (m->point_count > 0 && p.point_count > 0)
       *normal_spread = fmaxf(*normal_spread, fmaxf(fabsf(p.normal.x - m->normal.x), fabsf(p.normal.y - m->normal.y)));
+    if (distinct_points(&p, SWAP_POINT_TOL) != distinct_points(m, SWAP_POINT_TOL))
+      spread = INFINITY; /* at a discontinuity */
     for (int i = 0; i < m->point_count; ++i) {
       float nearest = INFINITY;
       for (int j = 0; j < p.point_count; ++j)
