@@ -212,7 +212,9 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
  * with its rotational stiffness 2 k a^2 (points at +-a), and summed over the
  * column the load wins near n = 12 at 30 Hz: tall stacks buckle slowly. So a
  * point carrying F (its last impulse over h: the warm start) is stiffened
- * until F compresses it at most TB_LOAD_COMPRESSION, up to h omega =
+ * until F compresses it at most TB_LOAD_COMPRESSION, or TB_LOAD_COMPRESSION_SHARE of the thinner dynamic body's
+ * half-thickness where that is less (a fixed 2 mm is 0.4 % of a 1 m box's half-thickness but 16 % of a 2.5 cm
+ * one's: small bodies would sink into each other by a visible share of their size), up to h omega =
  * TB_MAX_H_OMEGA. (The column of rotational springs is statically stable
  * while diag(k_i) - g L^T W L is positive definite, L summing the interface
  * tilts into block tilts and W the weight above each block: at 60 Hz and 4
@@ -222,12 +224,13 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
  * substep. Against a static or kinematic body the base stiffness is twice as
  * high. */
 #define TB_LOAD_COMPRESSION 0.002f
+#define TB_LOAD_COMPRESSION_SHARE 0.02f /* of the half-thickness: below TB_LOAD_COMPRESSION under 10 cm */
 #define TB_MAX_H_OMEGA 1.5f
 #define TB_TWO_PI (2.0f * 3.14159265358979f)
 
 /* The softness of four lanes: the base one (against a rigid body or not)
  * or, where load stiffening asks for more (need: the largest of the base
- * omega^2 and the points' F / (m_n TB_LOAD_COMPRESSION)), a stiffer one.
+ * omega^2 and the points' F / (m_n compression)), a stiffer one.
  * Few lanes are stiffened; each takes tb_make_softness. */
 static tb_f4 load_softness(const tb_step_context* ctx, tb_i4 rigid_other, tb_f4 omega, tb_f4 need,
                            tb_wide_contact* wc) {
@@ -288,6 +291,11 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
   tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI * 2.0f * ctx->contact_hertz), splat(TB_TWO_PI * ctx->contact_hertz));
   tb_f4 need = omega * omega;
+  /* the compression a load may cause: TB_LOAD_COMPRESSION, less for thin
+   * bodies (min_extent: a body's smallest shape half-thickness) */
+  tb_f4 thin_a = blend(INT_LANES(ba, type) == dynamic, LANES(ba, min_extent), splat(INFINITY));
+  tb_f4 thin_b = blend(INT_LANES(bb, type) == dynamic, LANES(bb, min_extent), splat(INFINITY));
+  tb_f4 compression = min4(splat(TB_LOAD_COMPRESSION), splat(TB_LOAD_COMPRESSION_SHARE) * min4(thin_a, thin_b));
   tb_f4 rn[2][2];    /* r x n of each point at A and B, for the block terms */
   tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
@@ -319,7 +327,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
     approach[p] = blend(used, nx * (vbx - vax) + ny * (vby - vay), zero);
     /* the load stiffening's need, point by point */
-    tb_f4 point_need = (normal_impulse * splat(ctx->inv_h)) / (normal_mass * splat(TB_LOAD_COMPRESSION));
+    tb_f4 point_need = (normal_impulse * splat(ctx->inv_h)) / (normal_mass * compression);
     need = blend(used & (normal_mass > zero) & (point_need > need), point_need, need);
   }
   /* the 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
