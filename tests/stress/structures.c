@@ -98,7 +98,10 @@ void stress_pyramid_100(stress_result* out) { run_pyramid(out, 100); }
  * of neighbouring apexes and carries one A-frame of the next level on its
  * middle. Levels of 5, 4, 3, 2, 1 frames: 30 leaning and 10 flat cards. A
  * card leaning at 20 deg needs a friction coefficient of about tan(20 deg)/2
- * = 0.18 at its foot, well below 0.6. */
+ * = 0.18 at its foot, well below 0.6. The flat cards (40 cm) are longer than
+ * the frame pitch (30 cm): neighbours start overlapping by 10 cm at the same
+ * height, as in PEEL's card house (5 cm there), and the push-out lifts one of
+ * each pair in the first steps. */
 #define CARD_HALF_T 0.001f
 #define CARD_HALF_L 0.2f
 #define CARD_TILT (20.0f * PI_F / 180.0f)
