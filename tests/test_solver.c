@@ -576,14 +576,15 @@ END_TEST
 
 /* Small bodies sink into each other in proportion to their size, not by a
  * fixed few mm. Two boxes of half-size h = 1.25 cm stacked on the ground, 2 s:
- * the upper one's load compresses its contact by the load target, 2 % of h,
- * where the soft contact's fixed 30 Hz would allow 2 g / omega^2 = 0.56 mm
- * (4.5 % of h). Derivation: each point carries F = m g / 2 with effective
- * mass 1 / k11, k11 = 2/m + 2 (3 / (2 m h^2)) h^2 = 5/m (I = 2 m h^2 / 3), so
- * the stiffness that compresses it 0.02 h is omega^2 = 2.5 g / (0.02 h),
- * 313 rad/s, under the cap of 1.5 / h_sub = 360 rad/s. The two points solved
- * together hold a = F h_sub at (k11 + k12) a = h_sub omega^2 (-s), k12 = -1/m:
- * -s = 4 F / (m omega^2) = 0.8 (0.02 h) = 0.2 mm. Bound: the 0.25 mm target. */
+ * the upper one's load compresses its contact by the load target, 2 % of the
+ * box's extent h sqrt(2) (0.35 mm), where the soft contact's fixed 30 Hz would
+ * allow 2 g / omega^2 = 0.56 mm. Derivation: each point carries F = m g / 2
+ * with effective mass 1 / k11, k11 = 2/m + 2 (3 / (2 m h^2)) h^2 = 5/m
+ * (I = 2 m h^2 / 3), so the stiffness that compresses it c = 0.35 mm is
+ * omega^2 = 2.5 g / c, 266 rad/s, under the cap of 1.5 / h_sub = 360 rad/s.
+ * The two points solved together hold a = F h_sub at
+ * (k11 + k12) a = h_sub omega^2 (-s), k12 = -1/m: -s = 0.8 c = 0.28 mm.
+ * Bound: the target c. */
 START_TEST(small_boxes_sink_in_proportion) {
   tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, false);
   ground_box(w, 5.0f, 0.6f);
@@ -593,9 +594,9 @@ START_TEST(small_boxes_sink_in_proportion) {
   tb_body_id upper = box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 3.0f * h}, 0.0f, h, h, &sd);
   step(w, 120);
   double overlap = 2.0 * h - (tb_body_get_position(upper).y - tb_body_get_position(lower).y);
-  fprintf(stderr, "small boxes: the upper rests %.3e m into the lower (%.2f %% of its half-size)\n", overlap,
-          100.0 * overlap / h);
-  ck_assert_msg(overlap > 0.0 && overlap < 0.02 * h, "overlap %g m", overlap);
+  fprintf(stderr, "small boxes: the upper rests %.3e m into the lower (%.2f %% of its extent)\n", overlap,
+          100.0 * overlap / (sqrt(2.0) * h));
+  ck_assert_msg(overlap > 0.0 && overlap < 0.02 * sqrt(2.0) * h, "overlap %g m", overlap);
   ck_assert_float_eq_tol(tb_body_get_position(upper).x, 0.0f, 1e-4f);
   tb_destroy_world(w);
 }
