@@ -515,20 +515,22 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
     }
   }
   float rr = fp.ref->radius, ri = fp.inc->radius;
+  /* an incident edge that crosses the face by under half its length runs
+   * steeply along the side planes: cutting it at a plane it is within the
+   * tolerance of would move the point far along it and drop a deep end-to-end
+   * contact in one argument order */
+  bool steep = fabsf(u[1] - u[0]) < 0.5f * tb_length(tb_sub(p[1], p[0]));
   for (int k = 0; k < 2; ++k) {
     tb_vec2 q = p[k];
     uint32_t id;
     /* A vertex beyond a side plane is cut back to it when the other end is
-     * inside the slab; where the incident edge runs steeply along the plane
-     * (across the face by under half its length), one within the tolerance
-     * stays, since the cut would move the point far along the edge and drop a
-     * deep end-to-end contact in one argument order. When the other end lies on that plane too (within the
-     * tolerance), the edge meets the slab in that end alone, whichever side
-     * of the plane rounding put either: a vertex within the tolerance stays as
-     * it is, one beyond it is dropped (a cut there would divide by a rounding
-     * difference, or add a point on top of the other end, which makes the
-     * solver's 2x2 block singular). */
-    bool steep = fabsf(u[1] - u[0]) < 0.5f * tb_length(tb_sub(p[1], p[0]));
+     * inside the slab; where the incident edge runs steeply along the plane,
+     * one within the tolerance stays (see steep). When the other end lies on
+     * that plane too (within the tolerance), the edge meets the slab in that
+     * end alone, whichever side of the plane rounding put either: a vertex
+     * within the tolerance stays as it is, one beyond it is dropped (a cut
+     * there would divide by a rounding difference, or add a point on top of
+     * the other end, which makes the solver's 2x2 block singular). */
     bool cut_low = u[k] < (steep ? -e : 0.0f) && u[1 - k] > e;
     bool cut_high = u[k] > len + (steep ? e : 0.0f) && u[1 - k] < len - e;
     if (cut_low) { /* cut at the side plane through r1 */
