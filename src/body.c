@@ -114,6 +114,7 @@ void tb_body_update_mass(tb_world* w, tb_body* b) {
   }
   /* keep the origin in place; the new centre moves with the body's rotation */
   b->center = tb_transform_point(b->transform, b->local_center);
+  b->center_residual = (tb_vec2){0.0f, 0.0f};
   b->linear_velocity = tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(b->center, old_center)));
   if (b->fixed_rotation) b->angular_velocity = 0.0f;
   update_extents(w, b);
@@ -176,6 +177,7 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
   tb_body* b = tb_body_at(w, index);
   b->type = def->type;
   b->center = def->position;
+  b->center_residual = (tb_vec2){0.0f, 0.0f};
   b->angle = def->angle;
   if (def->type != TB_STATIC_BODY) {
     b->linear_velocity = def->linear_velocity;
@@ -325,6 +327,7 @@ tb_result tb_body_set_transform(tb_body_id id, tb_vec2 position, float angle) {
   b->transform.q = tb_make_rot(angle);
   b->transform.p = position;
   b->center = tb_transform_point(b->transform, b->local_center);
+  b->center_residual = (tb_vec2){0.0f, 0.0f};
   b->center0 = b->center;
   b->angle0 = b->angle;
   tb_body_update_proxies(w, id.index1 - 1, (tb_vec2){0.0f, 0.0f});
@@ -572,6 +575,7 @@ tb_result tb_body_set_mass_data(tb_body_id id, tb_mass_data md) {
   b->local_center = md.center;
   b->mass_overridden = true;
   b->center = tb_transform_point(b->transform, b->local_center);
+  b->center_residual = (tb_vec2){0.0f, 0.0f};
   b->linear_velocity = tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(b->center, old_center)));
   return TB_OK;
 }

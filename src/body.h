@@ -9,6 +9,12 @@ typedef struct tb_body {
   /* Placement. The centre of mass and the angle are the integrated state; the
    * origin transform is derived from them: origin = center - R local_center. */
   tb_vec2 center;
+  /* What the float center cannot hold of the true centre (compensated
+   * summation, |residual| <= half a float step of center): far from the origin
+   * a step's displacement is often below that step (0.49 mm at 8 km), and
+   * rounding it away every step would freeze slow bodies and make the scene
+   * solve differently from one at the origin. Zero wherever the centre is set. */
+  tb_vec2 center_residual;
   float angle;
   tb_transform transform;
   tb_vec2 local_center;

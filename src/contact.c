@@ -60,14 +60,39 @@ bool tb_shape_types_collide(tb_shape_type a, tb_shape_type b) {
 
 static tb_contact* contact_at(tb_world* w, int i) { return (tb_contact*)tb_pool_at(&w->contacts, i); }
 
+/* A contact's place in its bodies' lists: by its shapes' indices, which do
+ * not depend on where the scene is. */
+static uint64_t shape_pair_key(const tb_contact* c) {
+  uint32_t lo = (uint32_t)(c->shape_a < c->shape_b ? c->shape_a : c->shape_b);
+  uint32_t hi = (uint32_t)(c->shape_a < c->shape_b ? c->shape_b : c->shape_a);
+  return (uint64_t)lo << 32 | hi;
+}
+
+/* The solver takes the contacts of the awake bodies in list order, and
+ * Gauss-Seidel's result depends on the order: a moving body's list is kept
+ * sorted (shape_pair_key), so that the same scene solves the same way
+ * wherever it is, not in the order the broad phase happened to find its
+ * pairs (which depends on the rounding of the coordinates). A static body's
+ * list, never walked by the solver, takes new contacts at its head. */
 static void link_edge(tb_world* w, int contact, int side) {
   tb_contact* c = contact_at(w, contact);
   tb_body* b = tb_body_at(w, c->edges[side].body);
   int key = contact * 2 + side;
-  c->edges[side].prev = -1;
-  c->edges[side].next = b->contact_list;
-  if (b->contact_list >= 0) contact_at(w, b->contact_list >> 1)->edges[b->contact_list & 1].prev = key;
-  b->contact_list = key;
+  int prev = -1, next = b->contact_list;
+  if (b->type != TB_STATIC_BODY) {
+    uint64_t order = shape_pair_key(c);
+    while (next >= 0 && shape_pair_key(contact_at(w, next >> 1)) < order) {
+      prev = next;
+      next = contact_at(w, next >> 1)->edges[next & 1].next;
+    }
+  }
+  c->edges[side].prev = prev;
+  c->edges[side].next = next;
+  if (next >= 0) contact_at(w, next >> 1)->edges[next & 1].prev = key;
+  if (prev >= 0)
+    contact_at(w, prev >> 1)->edges[prev & 1].next = key;
+  else
+    b->contact_list = key;
   b->contact_count += 1;
 }
 

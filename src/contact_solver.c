@@ -314,7 +314,11 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     wp->rby = blend(used, rby, zero);
     rn[p][0] = blend(used, rna, zero);
     rn[p][1] = blend(used, rnb, zero);
-    wp->base_separation = blend(used, LANES(c, manifold.points[p].separation), one);
+    /* the manifold is of the float centres; the true gap adds the bodies'
+     * center_residual along the normal */
+    tb_f4 residual_gap = (LANES(bb, center_residual.x) - LANES(ba, center_residual.x)) * nx +
+                         (LANES(bb, center_residual.y) - LANES(ba, center_residual.y)) * ny;
+    wp->base_separation = blend(used, LANES(c, manifold.points[p].separation) + residual_gap, one);
     wp->normal_mass = blend(used, normal_mass, zero);
     wp->tangent_mass = blend(used, tangent_mass, zero);
     wp->normal_impulse = blend(used, normal_impulse, zero);

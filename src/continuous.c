@@ -215,6 +215,7 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
   if (sc.t < 1.0f) {
     float t = sc.t;
     b->center = tb_lerp(b->center0, b->center, t);
+    b->center_residual = (tb_vec2){0.0f, 0.0f};
     b->angle = b->angle0 + t * (b->angle - b->angle0);
     tb_body_sync_transform(b);
   }

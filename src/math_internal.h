@@ -28,6 +28,19 @@ static inline float tb_length(tb_vec2 v) { return sqrtf(v.x * v.x + v.y * v.y); 
 static inline float tb_distance_sq(tb_vec2 a, tb_vec2 b) { return tb_length_sq(tb_sub(a, b)); }
 static inline tb_vec2 tb_vmin(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y}; }
 static inline tb_vec2 tb_vmax(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y}; }
+/* Knuth's TwoSum per component: returns fl(a + b) and sets *error to the
+ * part the rounding dropped, a + b - fl(a + b), exactly (any magnitudes; needs
+ * no fused or reassociated arithmetic, which -ffp-contract=off and no
+ * -ffast-math keep). */
+static inline float tb_two_sum_f(float a, float b, float* error) {
+  float s = a + b, bb = s - a;
+  *error = (a - (s - bb)) + (b - bb);
+  return s;
+}
+static inline tb_vec2 tb_two_sum(tb_vec2 a, tb_vec2 b, tb_vec2* error) {
+  return (tb_vec2){tb_two_sum_f(a.x, b.x, &error->x), tb_two_sum_f(a.y, b.y, &error->y)};
+}
+
 static inline tb_vec2 tb_lerp(tb_vec2 a, tb_vec2 b, float t) {
   return (tb_vec2){a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
 }

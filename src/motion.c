@@ -14,7 +14,7 @@
 #include "world.h"
 
 typedef struct state {
-  tb_vec2 x;
+  tb_vec2 x; /* displacement from the centre at the step start (see center_residual) */
   float a;
   tb_vec2 v;
   float w;
@@ -41,7 +41,7 @@ static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* for
   *torque = c->body->torque;
   if (c->world->force_field != NULL) {
     const tb_body* b = c->body;
-    tb_body_state s = {c->id, y->x, y->a, y->v, y->w, b->mass, b->inertia, b->user_data};
+    tb_body_state s = {c->id, tb_add(b->center, y->x), y->a, y->v, y->w, b->mass, b->inertia, b->user_data};
     tb_vec2 f = {0.0f, 0.0f};
     float tq = 0.0f;
     c->world->force_field(t, &s, c->world->force_field_context, &f, &tq);
@@ -110,7 +110,7 @@ static bool state_finite(const state* y) {
 bool tb_integrate_free_body(tb_world* w, int index, float dt, int substeps) {
   float h = dt / (float)substeps;
   tb_body* b = tb_body_at(w, index);
-  state y = {b->center, b->angle, b->linear_velocity, b->angular_velocity};
+  state y = {{0.0f, 0.0f}, b->angle, b->linear_velocity, b->angular_velocity};
   body_ctx c = {w, b, tb_make_body_id(w, index), tb_scale(b->gravity_scale, w->gravity)};
   for (int k = 0; k < substeps; ++k) {
     double t = w->time + (double)k * h;
@@ -122,7 +122,7 @@ bool tb_integrate_free_body(tb_world* w, int index, float dt, int substeps) {
   }
   if (b->fixed_rotation) y.w = 0.0f;
   if (!state_finite(&y)) return false; /* contain the NaN: this body keeps its old state */
-  b->center = y.x;
+  b->center = tb_two_sum(b->center, tb_add(b->center_residual, y.x), &b->center_residual);
   b->angle = y.a;
   b->linear_velocity = y.v;
   b->angular_velocity = y.w;

@@ -261,13 +261,16 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     } else {
       b->force = (tb_vec2){0.0f, 0.0f};
       b->torque = 0.0f;
-      tb_vec2 c = tb_add(b->center, s->dp);
+      /* compensated: c + residual = center + (residual + dp) exactly */
+      tb_vec2 residual;
+      tb_vec2 c = tb_two_sum(b->center, tb_add(b->center_residual, s->dp), &residual);
       float a = b->angle + s->da;
       if ((m->flags & MOTION_FAULT) || !tb_vec_finite(c) || !isfinite(a) || !tb_vec_finite(s->v) || !isfinite(s->w)) {
         bad += 1; /* contained: the body keeps its state from before the step */
         continue;
       }
       b->center = c;
+      b->center_residual = residual;
       b->angle = a;
       b->linear_velocity = s->v;
       b->angular_velocity = s->w;

@@ -556,6 +556,7 @@ uint64_t tb_world_hash(tb_world_id id) {
     hash_int(&s, i);
     hash_int(&s, (int)b->type);
     hash_vec(&s, b->center);
+    hash_vec(&s, b->center_residual);
     hash_float(&s, b->angle);
     hash_vec(&s, b->transform.p);
     hash_vec(&s, b->local_center);

@@ -856,6 +856,39 @@ START_TEST(determinism) {
 }
 END_TEST
 
+/* Far from the origin a step's displacement is below the float step of the
+ * coordinate (0.49 mm at 8 km; 1 mm/s moves 1.7e-5 m per step): the body
+ * keeps what rounding drops (center_residual), so it still moves, here 1 cm
+ * in 10 s, to within the half float step that its reported position rounds to.
+ * Without it each step's displacement rounds away and the body never moves.
+ * Once free, once sliding on frictionless ground (the contact solver's path). */
+START_TEST(slow_body_far_from_origin_moves) {
+  const float far = 8000.0f, ulp = 0.00048828125f; /* 2^-11, the float step in [4096, 8192) */
+  for (int on_ground = 0; on_ground < 2; ++on_ground) {
+    tb_world_id w = make_world((tb_vec2){0.0f, on_ground ? (float)-G : 0.0f}, false);
+    if (on_ground) {
+      tb_body_id ground = make_body(w, TB_STATIC_BODY, (tb_vec2){far, far - 0.5f}, 0.0f);
+      tb_shape_def gd = material(1.0f, 0.0f, 0.0f);
+      add_box(ground, &gd, 20.0f, 0.5f);
+    }
+    tb_body_id b = make_body(w, TB_DYNAMIC_BODY, (tb_vec2){far, far + 0.5f}, 0.0f);
+    tb_shape_def sd = material(1.0f, 0.0f, 0.0f);
+    add_box(b, &sd, 0.5f, 0.5f);
+    step(w, 60); /* settles onto the ground */
+    float x0 = tb_body_get_position(b).x;
+    ck_assert_int_eq(tb_body_set_linear_velocity(b, (tb_vec2){0.001f, 0.0f}), TB_OK);
+    step(w, 600);
+    tb_vec2 p = tb_body_get_position(b);
+    double moved = (double)p.x - x0;
+    fprintf(stderr, "slow body at 8 km (%s): moved %.6f m in 10 s (1 cm expected)\n",
+            on_ground ? "on the ground" : "free", moved);
+    ck_assert_msg(fabs(moved - 0.01) <= ulp, "moved %.6f m, not 0.01 m", moved);
+    ck_assert_msg(fabs((double)p.y - (far + 0.5)) <= (on_ground ? 0.005 : 0.0), "y = %.6f", (double)p.y);
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
 /* --------------------------------------------------- conveyor, rolling resistance -- */
 
 /* A static box with tangent_speed 2 m/s carries a resting box (friction 0.6,
@@ -1140,6 +1173,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, box_slides_down_incline);
   tcase_add_test(tc, box_sticks_below_friction_angle);
   tcase_add_test(tc, bounce_apex);
+  tcase_add_test(tc, slow_body_far_from_origin_moves);
   tcase_add_test(tc, head_on_collisions);
   tcase_add_test(tc, bullet_block_collision);
   tcase_add_test(tc, pyramid_of_20_stands);

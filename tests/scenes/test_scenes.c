@@ -129,8 +129,13 @@ static block_system system_of(tb_body_id block, tb_body_id bullet) {
  * mass (the bullet's line is 0.25 m from the block's centre, less the shift
  * m r / (M + m) of the centre towards the bullet).
  * Measured from the end of the impact step (the bullet lodged), where the
- * system's upward momentum is m v less one step of gravity, (M + m) g dt:
- * contacts and the weld exchange momentum exactly, so 1e-4 relative.
+ * system's upward momentum is m v less one step of gravity, (M + m) g dt,
+ * plus what the pillars still gave the block in that step: their contacts
+ * carry its weight until the solver sees the block lift off them, which in
+ * a substep's Gauss-Seidel order depends on whether the pillars' contacts or
+ * the bullet's come first. So V1 lies between (m v - (M + m) g dt) / (M + m)
+ * and that plus one substep of the block's support, g h M / (M + m)
+ * (contacts and the weld exchange momentum exactly otherwise; 1e-6 slack).
  * Tolerances: the rises agree to 1% (the issue's figure; both systems feel the
  * same gravity and impulse, measured 1.5e-5). The rise against V^2 / 2 g:
  * semi-implicit Euler with substep h loses V h / 2 of height, 0.9% of it at
@@ -175,7 +180,12 @@ START_TEST(bullet_block_same_rise_one_spins) {
   ck_assert_int_eq(lodged_at[0], lodged_at[1]);
   ck_assert_msg(tb_body_get_joint_count(bullets[0]) == 1 && tb_body_get_joint_count(bullets[1]) == 1,
                 "a bullet did not lodge in its block");
-  for (int k = 0; k < 2; ++k) ck_assert_rel(V1[k], (m * speed[k] - (M + m) * 10.0 * DT) / (M + m), 1e-4);
+  const double h = DT / SUBSTEPS;
+  for (int k = 0; k < 2; ++k) {
+    double low = (m * speed[k] - (M + m) * 10.0 * DT) / (M + m), high = low + 10.0 * h * M / (M + m);
+    ck_assert_msg(V1[k] >= low * (1.0 - 1e-6) && V1[k] <= high * (1.0 + 1e-6), "V1 = %.6f m/s, not in [%.6f, %.6f]",
+                  V1[k], low, high);
+  }
   double rise[2] = {top_y[0] - start_y[0], top_y[1] - start_y[1]};
   double rise_expected = V1[0] * V1[0] / 20.0;
   fprintf(stderr,
