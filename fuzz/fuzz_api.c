@@ -341,11 +341,12 @@ static tb_result command(model* m, fuzz_input* in) {
       return TB_OK;
     }
     case 14: { /* world settings */
-      switch (fuzz_u8(in) % 5) {
+      switch (fuzz_u8(in) % 6) {
         case 0: return tb_world_set_gravity(w, (tb_vec2){fuzz_real(in, -20, 20), fuzz_real(in, -20, 20)});
         case 1: return tb_world_set_integrator(w, (tb_integrator)(fuzz_u8(in) % 4));
         case 2: return tb_world_enable_sleeping(w, fuzz_u8(in) & 1);
         case 3: return tb_world_enable_continuous(w, fuzz_u8(in) & 1);
+        case 4: return tb_world_set_relax_iterations(w, 1 + fuzz_u8(in) % TB_MAX_RELAX_ITERATIONS);
         default: return tb_world_set_contact_tuning(w, fuzz_real(in, 1, 60), fuzz_real(in, 0, 20), 3.0f);
       }
     }

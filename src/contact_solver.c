@@ -204,50 +204,7 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
   return blend(x > zero, splat(1.0f) / x, zero);
 }
 
-/* The stiffness of a contact. A soft point is a damped spring k = m_n omega^2
- * (m_n its effective mass), so under a force F it sinks F / k. With one
- * hertz for all, k does not grow with the load while the toppling moment of a
- * column does: the interface of a column of n boxes that carries i of them
- * must resist a moment of about (i m g)(i/2 box heights) per radian of tilt
- * with its rotational stiffness 2 k a^2 (points at +-a), and summed over the
- * column the load wins near n = 12 at 30 Hz: tall stacks buckle slowly. So a
- * point carrying F (its last impulse over h: the warm start) is stiffened until F compresses it at most
- * TB_LOAD_COMPRESSION, or TB_LOAD_COMPRESSION_SHARE of the smaller dynamic body's size (max_extent, centre of mass
- * to farthest surface) where that is less: a fixed 2 mm is 0.3 % of a 1 m box's extent but 11 % of a 2.5 cm one's,
- * and small bodies would sink into each other by a visible share of their size. Not a share of the thickness:
- * PEEL's house of 2 mm cards, which stands at 8 substeps, toppled when its cards' contacts were stiffened to 2 % of
- * 1 mm. The stiffening stops at h omega = TB_MAX_H_OMEGA. (The column of rotational springs is statically stable
- * while diag(k_i) - g L^T W L is positive definite, L summing the interface tilts into block tilts and W the weight
- * above each block: at 60 Hz and 4 substeps that holds to 21 boxes; stiffer caps jitter.) At the cap the soft
- * constraint is nearly rigid (mass scale 0.98 at damping ratio 10) with a position bias of
- * h omega / (2 zeta + h omega) = 7 % of the error per substep. Against a static or kinematic body the base
- * stiffness is twice as high. */
-#define TB_LOAD_COMPRESSION 0.002f
-#define TB_LOAD_COMPRESSION_SHARE 0.02f /* of max_extent: below TB_LOAD_COMPRESSION under 10 cm */
-#define TB_MAX_H_OMEGA 1.5f
 #define TB_TWO_PI (2.0f * 3.14159265358979f)
-
-/* The softness of four lanes: the base one (against a rigid body or not)
- * or, where load stiffening asks for more (need: the largest of the base
- * omega^2 and the points' F / (m_n compression)), a stiffer one.
- * Few lanes are stiffened; each takes tb_make_softness. */
-static tb_f4 load_softness(const tb_step_context* ctx, tb_i4 rigid_other, tb_f4 omega, tb_f4 need,
-                           tb_wide_contact* wc) {
-  tb_f4 omega2 = omega * omega;
-  wc->bias_rate = blend(rigid_other, splat(ctx->static_softness.bias_rate), splat(ctx->contact_softness.bias_rate));
-  wc->mass_scale = blend(rigid_other, splat(ctx->static_softness.mass_scale), splat(ctx->contact_softness.mass_scale));
-  for (int lane = 0; lane < 4; ++lane) {
-    if (!(need[lane] > omega[lane] * omega[lane])) continue;
-    float stiff = sqrtf(need[lane]), most = TB_MAX_H_OMEGA * ctx->inv_h;
-    if (stiff > most) stiff = most;
-    if (!(stiff > omega[lane])) continue;
-    tb_softness soft = tb_make_softness(stiff / TB_TWO_PI, ctx->contact_damping_ratio, ctx->h);
-    wc->bias_rate[lane] = soft.bias_rate;
-    wc->mass_scale[lane] = soft.mass_scale;
-    omega2[lane] = stiff * stiff;
-  }
-  return omega2;
-}
 
 /* Prepares the constraints of one block's contacts, four lanes at a time
  * (the same float operations for each lane as for one contact alone).
@@ -288,12 +245,9 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 cax = LANES(ba, center.x), cay = LANES(ba, center.y), cbx = LANES(bb, center.x), cby = LANES(bb, center.y);
   const tb_i4 dynamic = {TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY};
   tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
-  tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI * 2.0f * ctx->contact_hertz), splat(TB_TWO_PI * ctx->contact_hertz));
-  tb_f4 need = omega * omega;
-  /* the compression a load may cause: TB_LOAD_COMPRESSION, less for small bodies */
-  tb_f4 size_a = blend(INT_LANES(ba, type) == dynamic, LANES(ba, max_extent), splat(INFINITY));
-  tb_f4 size_b = blend(INT_LANES(bb, type) == dynamic, LANES(bb, max_extent), splat(INFINITY));
-  tb_f4 compression = min4(splat(TB_LOAD_COMPRESSION), splat(TB_LOAD_COMPRESSION_SHARE) * min4(size_a, size_b));
+  tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI * ctx->static_hertz), splat(TB_TWO_PI * ctx->contact_hertz));
+  wc->bias_rate = blend(rigid_other, splat(ctx->static_softness.bias_rate), splat(ctx->contact_softness.bias_rate));
+  wc->mass_scale = blend(rigid_other, splat(ctx->static_softness.mass_scale), splat(ctx->contact_softness.mass_scale));
   tb_f4 rn[2][2];    /* r x n of each point at A and B, for the block terms */
   tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
@@ -328,9 +282,6 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_f4 vax = A.vx + -A.w * ray, vay = A.vy + A.w * rax;
     tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
     approach[p] = blend(used, nx * (vbx - vax) + ny * (vby - vay), zero);
-    /* the load stiffening's need, point by point */
-    tb_f4 point_need = (normal_impulse * splat(ctx->inv_h)) / (normal_mass * compression);
-    need = blend(used & (normal_mass > zero) & (point_need > need), point_need, need);
   }
   /* the 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
    * and its inverse. Like Box2D 2.4, points so close together that K is near
@@ -356,7 +307,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
    * impulses a = F h at K a = h omega^2 (-s) (the soft update's fixed point at
    * v_n = 0; K the points' mass matrix inverse, diagonal where they are solved
    * one by one; one point alone: -s = F / (m_n omega^2)). */
-  tb_f4 per_depth = splat(ctx->inv_h) / load_softness(ctx, rigid_other, omega, need, wc);
+  tb_f4 per_depth = splat(ctx->inv_h) / (omega * omega);
   tb_f4 a1 = wc->p[0].normal_impulse, a2 = wc->p[1].normal_impulse, k12_block = blend(block, k12, zero);
   /* max4 with zero also turns 0 * inf (a tiny contact_hertz) into 0 */
   wc->p[0].push_depth = max4((k11 * a1 + k12_block * a2) * per_depth, zero) + splat(TB_DEEP_OVERLAP);
@@ -556,7 +507,7 @@ static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, wide_bo
 /* Always inlined: the biased and the relax pass each get a copy without the
  * other's branches. */
 static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h,
-                                                             float push, bool use_bias) {
+                                                             float push, bool use_bias, tb_f4* change) {
   wide_body A = gather(states, c->a), B = gather(states, c->b);
   const tb_f4 zero = splat(0.0f);
   tb_wide_point *p1 = &c->p[0], *p2 = &c->p[1];
@@ -600,6 +551,9 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   p2->max_normal_impulse = max4(p2->max_normal_impulse, x2);
   tb_f4 d2 = x2 - a2;
   apply_impulse(c, p2, d2 * c->nx, d2 * c->ny, &A, &B);
+  /* the normal speed each point's change made (its own K_ii; the coupling
+   * term is left out), for the relax passes' stop */
+  if (!use_bias) *change = max4(*change, max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22));
   solve_friction(c, p1, &A, &B);
   solve_friction(c, p2, &A, &B);
   if (c->rolling) {
@@ -719,15 +673,17 @@ void tb_contact_solver_reset(tb_world* w) {
   }
 }
 
-void tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
+float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+  tb_f4 change = splat(0.0f);
   /* one loop per pass kind, each with solve_wide specialised for it */
   if (use_bias)
     for (int b = 0; b < w->wide_count; ++b)
-      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true);
+      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true, &change);
   else
     for (int b = 0; b < w->wide_count; ++b)
-      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false);
+      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, &change);
+  return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }
 
 /* Newton's restitution on the points that approached faster than the

@@ -39,9 +39,10 @@ typedef struct tb_step_context {
   float dt, inv_dt; /* the whole step */
   float h, inv_h;   /* one substep */
   int substeps;
-  float contact_hertz, contact_damping_ratio; /* dynamic against dynamic (after the substep cap) */
-  tb_softness contact_softness;               /* dynamic against dynamic */
-  tb_softness static_softness;                /* dynamic against static or kinematic: stiffer */
+  float contact_hertz, static_hertz; /* dynamic against dynamic, against static/kinematic (after the cap) */
+  float contact_damping_ratio;
+  tb_softness contact_softness; /* dynamic against dynamic */
+  tb_softness static_softness;  /* dynamic against static or kinematic: stiffer */
   tb_softness joint_softness;
   float contact_push_max_velocity;
   float restitution_threshold;

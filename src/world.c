@@ -17,9 +17,10 @@ tb_world_def tb_default_world_def(void) {
   return (tb_world_def){.gravity = {0.0f, -10.0f},
                         .integrator = TB_INTEGRATOR_MIDPOINT,
                         .hit_event_threshold = 1.0f,
-                        .contact_hertz = 30.0f,
+                        .contact_hertz = 120.0f,
                         .contact_damping_ratio = 10.0f,
                         .contact_push_max_velocity = 3.0f,
+                        .relax_iterations = 8,
                         .joint_hertz = 60.0f,
                         .joint_damping_ratio = 2.0f,
                         .restitution_threshold = 1.0f,
@@ -49,6 +50,12 @@ static const char* const def_joint_names[2] = {"def->joint_hertz", "def->joint_d
 static const char* const setter_contact_names[3] = {"hertz", "damping_ratio", "push_max_velocity"};
 static const char* const setter_joint_names[2] = {"hertz", "damping_ratio"};
 
+static tb_result check_relax_iterations(tb_world* w, const char* fn, const char* name, int n) {
+  if (n < 1 || n > TB_MAX_RELAX_ITERATIONS)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %d must be in 1..%d", fn, name, n, TB_MAX_RELAX_ITERATIONS);
+  return TB_OK;
+}
+
 static tb_result check_integrator(tb_world* w, const char* fn, tb_integrator in) {
   if ((int)in < (int)TB_INTEGRATOR_SEMI_IMPLICIT_EULER || (int)in > (int)TB_INTEGRATOR_RK4)
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: integrator %d is not a tb_integrator", fn, (int)in);
@@ -73,6 +80,7 @@ tb_world_id tb_create_world(const tb_world_def* def) {
           TB_OK ||
       tb_check_non_negative(NULL, "tb_create_world", "def->restitution_threshold", def->restitution_threshold) !=
           TB_OK ||
+      check_relax_iterations(NULL, "tb_create_world", "def->relax_iterations", def->relax_iterations) != TB_OK ||
       tb_check_positive(NULL, "tb_create_world", "def->maximum_linear_speed", def->maximum_linear_speed) != TB_OK)
     return null_id;
   if (!tb_value_ok(def->hit_event_threshold) || def->hit_event_threshold < 0.0f) {
@@ -116,6 +124,7 @@ tb_world_id tb_create_world(const tb_world_def* def) {
   w->contact_hertz = def->contact_hertz;
   w->contact_damping_ratio = def->contact_damping_ratio;
   w->contact_push_max_velocity = def->contact_push_max_velocity;
+  w->relax_iterations = def->relax_iterations;
   w->joint_hertz = def->joint_hertz;
   w->joint_damping_ratio = def->joint_damping_ratio;
   w->restitution_threshold = def->restitution_threshold;
@@ -388,6 +397,20 @@ tb_result tb_world_set_contact_tuning(tb_world_id id, float hertz, float damping
   w->contact_damping_ratio = damping_ratio;
   w->contact_push_max_velocity = push_max_velocity;
   return TB_OK;
+}
+
+tb_result tb_world_set_relax_iterations(tb_world_id id, int iterations) {
+  const char* fn = "tb_world_set_relax_iterations";
+  tb_world* w = tb_world_get_unlocked(id, fn);
+  if (w == NULL) return tb_last_result();
+  tb_result r = check_relax_iterations(w, fn, "iterations", iterations);
+  if (r == TB_OK) w->relax_iterations = iterations;
+  return r;
+}
+
+int tb_world_get_relax_iterations(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_get_relax_iterations");
+  return w != NULL ? w->relax_iterations : 0;
 }
 
 tb_result tb_world_set_joint_tuning(tb_world_id id, float hertz, float damping_ratio) {

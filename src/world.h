@@ -44,6 +44,7 @@ typedef struct tb_world {
   void* mix_context;
   /* solver settings (tb_world_def) */
   float contact_hertz, contact_damping_ratio, contact_push_max_velocity;
+  int relax_iterations;
   float joint_hertz, joint_damping_ratio;
   float restitution_threshold, maximum_linear_speed;
   bool enable_sleep, enable_continuous, enable_warm_starting;
@@ -137,7 +138,9 @@ int tb_solve(tb_world* world, float time_step, int substeps);
 bool tb_contact_solver_prepare(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_warm_start(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_reset(tb_world* w);
-void tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias);
+/* One pass over the contacts; returns the largest normal speed change a point
+ * got in a relax pass (m/s; 0 for a biased pass). */
+float tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias);
 /* Pushes deeply overlapping points apart through momentum-free push
  * velocities (ctx->push_velocities, NULL when no point is deep) that move the
  * bodies in the next position update and are then dropped. */

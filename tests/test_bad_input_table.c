@@ -173,6 +173,14 @@ START_TEST(world_settings) {
   const int bad_substeps[] = {0, -1, 65, 2147483647, -2147483647 - 1};
   for (int i = 0; i < 5; ++i)
     REJECT(tb_world_step(W, 1.0f / 60.0f, bad_substeps[i]), TB_ERR_INVALID_ARGUMENT, "substeps");
+  /* the relax passes: the same integer range checks, as setter and as field */
+  const int bad_relax[] = {0, -1, TB_MAX_RELAX_ITERATIONS + 1, 2147483647, -2147483647 - 1};
+  for (int i = 0; i < 5; ++i) {
+    REJECT(tb_world_set_relax_iterations(W, bad_relax[i]), TB_ERR_INVALID_ARGUMENT, "iterations");
+    tb_world_def wd = tb_default_world_def();
+    wd.relax_iterations = bad_relax[i];
+    REJECT(tb_create_world(&wd), TB_ERR_INVALID_ARGUMENT, "relax_iterations");
+  }
 }
 END_TEST
 
@@ -199,6 +207,8 @@ START_TEST(stale_worlds) {
     REJECT(tb_world_enable_warm_starting(w, false), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_contact_tuning(w, 30, 10, 3), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_joint_tuning(w, 60, 2), TB_ERR_STALE_HANDLE, "world");
+    REJECT(tb_world_set_relax_iterations(w, 4), TB_ERR_STALE_HANDLE, "world");
+    REJECT(tb_world_get_relax_iterations(w), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_restitution_threshold(w, 1), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_maximum_linear_speed(w, 1), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_get_user_data(w), TB_ERR_STALE_HANDLE, "world");

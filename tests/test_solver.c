@@ -560,10 +560,36 @@ END_TEST
 
 /* Thirty boxes, same bounds over 10 s (issue 7 asks for 30 s of it in the
  * stress suite): the load at the bottom is twice that of the 15-box column
- * and the toppling moment four times, which is what the load-scaled contact
- * stiffness is for. The column sinks more (each interface i boxes from the
- * top holds i boxes), so the height bound is 10 cm here. */
-START_TEST(stack_of_30_stands) { structure_stands("stack", column, 30, 0.1); }
+ * and the toppling moment four times, which is what the stiff contacts and
+ * the repeated relax passes are for (solver.c). The column sinks more (each
+ * interface i boxes from the top holds i boxes: about 0.02 mm per box weight,
+ * 1 cm in all), within the same 5 cm. */
+START_TEST(stack_of_30_stands) { structure_stands("stack", column, 30, 0.05); }
+END_TEST
+
+/* The relax passes are what hold the 30-box column: with one pass per
+ * substep (Box2D v3's choice) its top leans past the 5 cm bound within 10 s
+ * (0.2 m; it falls later); with the default (up to 8, stopping once
+ * converged) it stays within 5 cm. */
+START_TEST(relax_iterations_hold_a_column) {
+  double drift[2];
+  for (int k = 0; k < 2; ++k) {
+    tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, false);
+    if (k == 0) ck_assert_int_eq(tb_world_set_relax_iterations(w, 1), TB_OK);
+    ground_box(w, 40.0f, 0.6f);
+    tb_body_id top = column(w, 0.0f, 30);
+    tb_vec2 p0 = tb_body_get_position(top);
+    drift[k] = 0.0;
+    for (int i = 0; i < 600; ++i) {
+      step(w, 1);
+      drift[k] = fmax(drift[k], fabs(tb_body_get_position(top).x - p0.x));
+    }
+    tb_destroy_world(w);
+  }
+  fprintf(stderr, "30-box column: top drift %.3g m with 1 relax pass, %.3g m with up to 8\n", drift[0], drift[1]);
+  ck_assert_msg(drift[1] < 0.05, "column top drifted %g m with the default passes", drift[1]);
+  ck_assert_msg(drift[0] > 0.05, "column top drifted only %g m with one pass", drift[0]);
+}
 END_TEST
 
 /* A pyramid of base 20 (210 boxes) stands for 10 s, sleep off. The top box
@@ -574,18 +600,16 @@ END_TEST
 START_TEST(pyramid_of_20_stands) { structure_stands("pyramid", pyramid, 20, 0.05); }
 END_TEST
 
-/* Small bodies sink into each other in proportion to their size, not by a
- * fixed few mm. Two boxes of half-size h = 1.25 cm stacked on the ground, 2 s:
- * the upper one's load compresses its contact by the load target, 2 % of the
- * box's extent h sqrt(2) (0.35 mm), where the soft contact's fixed 30 Hz would
- * allow 2 g / omega^2 = 0.56 mm. Derivation: each point carries F = m g / 2
- * with effective mass 1 / k11, k11 = 2/m + 2 (3 / (2 m h^2)) h^2 = 5/m
- * (I = 2 m h^2 / 3), so the stiffness that compresses it c = 0.35 mm is
- * omega^2 = 2.5 g / c, 266 rad/s, under the cap of 1.5 / h_sub = 360 rad/s.
- * The two points solved together hold a = F h_sub at
- * (k11 + k12) a = h_sub omega^2 (-s), k12 = -1/m: -s = 0.8 c = 0.28 mm.
- * Bound: the target c. */
-START_TEST(small_boxes_sink_in_proportion) {
+/* Small bodies rest on the same stiff spring as large ones: two boxes of
+ * half-size h = 1.25 cm stacked on the ground, 2 s. The contacts' stiffness
+ * sits at its cap, omega = 3 / h_sub = 720 rad/s at 240 Hz substeps. Each of
+ * the upper box's two points carries F = m g / 2 with k11 = 2/m +
+ * 2 (3 / (2 m h^2)) h^2 = 5/m (I = 2 m h^2 / 3) and k12 = -1/m; solved
+ * together they hold a = F h_sub at (k11 + k12) a = h_sub omega^2 (-s), so
+ * -s = 4 F / (m omega^2) = 2 g / omega^2 = 0.0386 mm, 0.22 % of the box's
+ * extent (Box2D v3's 30 Hz would allow 0.56 mm, 3 %). Bound: the closed form
+ * to 1 %. */
+START_TEST(small_boxes_rest_at_the_spring_overlap) {
   tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, false);
   ground_box(w, 5.0f, 0.6f);
   const float h = 0.0125f;
@@ -596,7 +620,8 @@ START_TEST(small_boxes_sink_in_proportion) {
   double overlap = 2.0 * h - (tb_body_get_position(upper).y - tb_body_get_position(lower).y);
   fprintf(stderr, "small boxes: the upper rests %.3e m into the lower (%.2f %% of its extent)\n", overlap,
           100.0 * overlap / (sqrt(2.0) * h));
-  ck_assert_msg(overlap > 0.0 && overlap < 0.02 * sqrt(2.0) * h, "overlap %g m", overlap);
+  const double omega = 3.0 * SUBSTEPS / (double)DT;
+  ck_assert_rel(overlap, 2.0 * G / (omega * omega), 0.01);
   ck_assert_float_eq_tol(tb_body_get_position(upper).x, 0.0f, 1e-4f);
   tb_destroy_world(w);
 }
@@ -661,13 +686,10 @@ END_TEST
  * ends: a 400:1 mass ratio. Sleep off. The small boxes must not be crushed
  * into the ground and the plank must keep its height. Rigid contacts would
  * hold both exactly. A soft point of effective mass m_n and stiffness omega
- * holds a force F with an overlap F / (m_n omega^2); tumble stiffens loaded
- * points up to h omega = 1.5 (omega = 360/s at 240 Hz substeps). Each of the
- * 8 points carries ~1000 N with m_n ~ 0.4 kg (a light box's corner): about
- * 1.9 cm at the plank's interface and 1.8 cm at the ground's (60 Hz), 3.7 cm
- * in all once the stiffness has followed the load, a little more in the
- * first steps while it ramps up (the load is only known from the impulses
- * of the step before). Bounds: the plank sinks under 5 cm and the small boxes
+ * holds a force F with an overlap F / (m_n omega^2), omega = 720/s at
+ * 240 Hz substeps (the cap, solver.c). Each of the 8 points carries ~1000 N
+ * with m_n ~ 0.4 kg (a light box's corner): about 5 mm at each interface,
+ * 1 cm in all (measured 7.8 mm). Bounds: the plank sinks under 5 cm and the small boxes
  * under 5 cm (5% of their height: "not crushed"), and the plank does not
  * slide off (3 cm sideways). */
 START_TEST(mass_ratio_400_to_1) {
@@ -960,14 +982,13 @@ END_TEST
 
 /* ------------------------------------------------------------------ bad input -- */
 
-/* Whether msg names `name`; underscores and spaces count as the same, so
- * "contact damping ratio" names damping_ratio. */
 /* The extremes of the valid contact tuning stay finite: a box created 20 cm
  * into the ground (so the push-out runs) with contact_hertz 1e-20 (omega^2
  * underflows to a denormal; the push depth divides by it) and 1e6 (capped at
- * a quarter of the substep rate), each with push speed 0 and 1e3. After 2 s
- * the box is finite, at rest and out of the ground to within 1 cm (load
- * stiffening holds it even when the base spring is nearly nothing). */
+ * 0.48 times the substep rate), each with push speed 0 and 1e3. After 2 s the
+ * box is finite and at rest; the stiff contact has pushed it out of the
+ * ground to within 1 cm. (A spring of 1e-20 Hz corrects no overlap: the box
+ * stays in the ground, held by the relax pass, and that is what it asks for.) */
 START_TEST(extreme_contact_tuning_stays_finite) {
   const float hertz[2] = {1e-20f, 1e6f}, push[2] = {0.0f, 1e3f};
   for (int k = 0; k < 4; ++k) {
@@ -986,12 +1007,15 @@ START_TEST(extreme_contact_tuning_stays_finite) {
             (double)push[k % 2], (double)p.y, (double)v.x, (double)v.y);
     ck_assert(isfinite(p.x) && isfinite(p.y) && isfinite(v.x) && isfinite(v.y));
     ck_assert_msg(fabs(v.x) < 0.01 && fabs(v.y) < 0.01, "box moves at (%g, %g)", (double)v.x, (double)v.y);
-    if (push[k % 2] > 0.0f) ck_assert_msg(p.y > 0.49f, "box still %g m in the ground", 0.5 - (double)p.y);
+    if (push[k % 2] > 0.0f && hertz[k / 2] > 1.0f)
+      ck_assert_msg(p.y > 0.49f, "box still %g m in the ground", 0.5 - (double)p.y);
     tb_destroy_world(w);
   }
 }
 END_TEST
 
+/* Whether msg names `name`; underscores and spaces count as the same, so
+ * "contact damping ratio" names damping_ratio. */
 static bool names(const char* msg, const char* name) {
   char m[512], n[128];
   size_t i;
@@ -1110,6 +1134,9 @@ START_TEST(bad_solver_setters) {
   EXPECT_REJECTED(w, h, tb_world_set_contact_tuning(w, 30.0f, nan, 3.0f), "damping_ratio");
   EXPECT_REJECTED(w, h, tb_world_set_contact_tuning(w, 30.0f, 10.0f, -3.0f), "push_max_velocity");
   EXPECT_REJECTED(w, h, tb_world_set_contact_tuning(w, 30.0f, 10.0f, nan), "push_max_velocity");
+  EXPECT_REJECTED(w, h, tb_world_set_relax_iterations(w, 0), "iterations");
+  EXPECT_REJECTED(w, h, tb_world_set_relax_iterations(w, TB_MAX_RELAX_ITERATIONS + 1), "iterations");
+  ck_assert_int_eq(tb_world_get_relax_iterations(w), 8);
   EXPECT_REJECTED(w, h, tb_world_set_joint_tuning(w, 0.0f, 2.0f), "hertz");
   EXPECT_REJECTED(w, h, tb_world_set_joint_tuning(w, -60.0f, 2.0f), "hertz");
   EXPECT_REJECTED(w, h, tb_world_set_joint_tuning(w, nan, 2.0f), "hertz");
@@ -1148,12 +1175,17 @@ START_TEST(bad_solver_setters) {
   tb_destroy_world(twin.w);
   ck_assert_int_eq(tb_world_set_contact_tuning(dead, 30.0f, 10.0f, 3.0f), TB_ERR_STALE_HANDLE);
   ck_assert_int_eq(tb_world_set_joint_tuning(dead, 60.0f, 2.0f), TB_ERR_STALE_HANDLE);
+  ck_assert_int_eq(tb_world_set_relax_iterations(dead, 4), TB_ERR_STALE_HANDLE);
+  ck_assert_int_eq(tb_world_get_relax_iterations(dead), 0);
   ck_assert_int_eq(tb_world_set_restitution_threshold(dead, 1.0f), TB_ERR_STALE_HANDLE);
   ck_assert_int_eq(tb_world_set_maximum_linear_speed(dead, 100.0f), TB_ERR_STALE_HANDLE);
   ck_assert_int_eq(tb_world_enable_sleeping(dead, true), TB_ERR_STALE_HANDLE);
   /* the edges of the ranges are taken */
   ck_assert_int_eq(tb_world_set_contact_tuning(w, 20.0f, 0.0f, 0.0f), TB_OK);
   ck_assert_int_eq(tb_world_set_joint_tuning(w, 30.0f, 0.0f), TB_OK);
+  ck_assert_int_eq(tb_world_set_relax_iterations(w, 1), TB_OK);
+  ck_assert_int_eq(tb_world_set_relax_iterations(w, TB_MAX_RELAX_ITERATIONS), TB_OK);
+  ck_assert_int_eq(tb_world_get_relax_iterations(w), TB_MAX_RELAX_ITERATIONS);
   ck_assert_int_eq(tb_world_set_restitution_threshold(w, 0.0f), TB_OK);
   ck_assert_int_eq(tb_world_set_maximum_linear_speed(w, 50.0f), TB_OK);
   ck_assert_int_eq(tb_shape_set_rolling_resistance(p.ball_shape, 0.0f), TB_OK);
@@ -1177,7 +1209,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, head_on_collisions);
   tcase_add_test(tc, bullet_block_collision);
   tcase_add_test(tc, pyramid_of_20_stands);
-  tcase_add_test(tc, small_boxes_sink_in_proportion);
+  tcase_add_test(tc, small_boxes_rest_at_the_spring_overlap);
   tcase_add_test(tc, newtons_cradle);
   tcase_add_test(tc, determinism);
   tcase_add_test(tc, conveyor_belt);
@@ -1186,6 +1218,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, bad_solver_setters);
   tcase_add_test(tc, stack_of_15_stands);
   tcase_add_test(tc, stack_of_30_stands);
+  tcase_add_test(tc, relax_iterations_hold_a_column);
   tcase_add_test(tc, mass_ratio_400_to_1);
   tcase_add_test(tc, overlapping_column_separates_without_launch);
   tcase_add_test(tc, extreme_contact_tuning_stays_finite);
