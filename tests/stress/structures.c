@@ -94,19 +94,25 @@ void stress_pyramid_100(stress_result* out) { run_pyramid(out, 100); }
 
 /* Cards 2 mm thick and 40 cm long, density 1, friction 0.6. Each level is a
  * row of A-frames (two cards leaning 20 deg from vertical, their top ends
- * 1 mm apart at the start) CARD_PITCH apart; a flat card lies across each pair
- * of neighbouring apexes and carries one A-frame of the next level on its
+ * 1 mm apart at the start); a flat card lies across each pair of
+ * neighbouring apexes and carries one A-frame of the next level on its
  * middle. Levels of 5, 4, 3, 2, 1 frames: 30 leaning and 10 flat cards. A
  * card leaning at 20 deg needs a friction coefficient of about tan(20 deg)/2
- * = 0.18 at its foot, well below 0.6. The flat cards (40 cm) are longer than
- * the frame pitch (30 cm): neighbours start overlapping by 10 cm at the same
- * height, as in PEEL's card house (5 cm there), and the push-out lifts one of
- * each pair in the first steps. */
+ * = 0.18 at its foot and tan(20 deg) = 0.36 at the apex, where the contact
+ * normal is one card's face normal while the force is horizontal (the two
+ * cards' moment balances about their feet leave no vertical share). The
+ * frames stand a card length plus 1 mm apart, so that the flat cards lie end
+ * to end, each end 0.5 mm short of an apex's axis and 1.9 mm past the
+ * leaning card's outer top corner it rests on: a start a rigid world holds
+ * as it is. (Frames closer together make neighbouring flat cards start
+ * overlapping at the same height; the push-out then lifts one of each pair
+ * and the jolt topples the house, whatever the solver settings.) */
 #define CARD_HALF_T 0.001f
 #define CARD_HALF_L 0.2f
 #define CARD_TILT (20.0f * PI_F / 180.0f)
 #define CARD_GAP 0.0005f /* each card's top 0.5 mm short of the frame's axis */
 #define CARD_LEVELS 5
+#define CARD_FLAT_GAP 0.0005f /* each flat card's end 0.5 mm short of an apex's axis */
 
 void stress_build_card_house(tb_world_id w) {
   stress_ground(w, 0.0f, 0.0f, 5.0f);
@@ -116,8 +122,7 @@ void stress_build_card_house(tb_world_id w) {
   float cy = CARD_HALF_L * c + CARD_HALF_T * s;
   /* height of a leaning card's outer top corner above the floor */
   float apex = 2.0f * CARD_HALF_L * c + 2.0f * CARD_HALF_T * s;
-  float foot = 2.0f * (2.0f * CARD_HALF_L * s + 2.0f * CARD_HALF_T * c + CARD_GAP);
-  float pitch = foot + 0.02f; /* 2 cm between neighbouring frames' feet */
+  float pitch = 2.0f * CARD_HALF_L + 2.0f * CARD_FLAT_GAP; /* flat cards end to end */
   float floor_y = 0.0f;
   for (int level = 0; level < CARD_LEVELS; ++level) {
     int frames = CARD_LEVELS - level;
