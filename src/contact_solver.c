@@ -204,8 +204,6 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
   return blend(x > zero, splat(1.0f) / x, zero);
 }
 
-#define TB_TWO_PI (2.0f * 3.14159265358979f)
-
 /* Prepares the constraints of one block's contacts, four lanes at a time
  * (the same float operations for each lane as for one contact alone).
  * k[lane] is the step contact of a lane, -1 for an unused one (cleared
@@ -245,7 +243,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 cax = LANES(ba, center.x), cay = LANES(ba, center.y), cbx = LANES(bb, center.x), cby = LANES(bb, center.y);
   const tb_i4 dynamic = {TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY};
   tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
-  tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI * ctx->static_hertz), splat(TB_TWO_PI * ctx->contact_hertz));
+  tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI_F * ctx->static_hertz), splat(TB_TWO_PI_F * ctx->contact_hertz));
   wc->bias_rate = blend(rigid_other, splat(ctx->static_softness.bias_rate), splat(ctx->contact_softness.bias_rate));
   wc->mass_scale = blend(rigid_other, splat(ctx->static_softness.mass_scale), splat(ctx->contact_softness.mass_scale));
   tb_f4 rn[2][2];    /* r x n of each point at A and B, for the block terms */

@@ -50,6 +50,7 @@
 #include <string.h>
 
 #include "joint.h"
+#include "math_internal.h"
 #include "pool.h"
 #include "world.h"
 
@@ -124,7 +125,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges))
     return false;
   float hw = TB_TREE_H_OMEGA;
-  t->softness = tb_make_softness(hw * ctx->inv_h / (2.0f * 3.14159265358979f), w->joint_damping_ratio, ctx->h);
+  t->softness = tb_make_softness(hw * ctx->inv_h / TB_TWO_PI_F, w->joint_damping_ratio, ctx->h);
 
   /* Groups of dynamic bodies linked by joints (union-find). A group whose
    * joints close a loop, or that has a rigid row the tree cannot take, stays

@@ -7,6 +7,9 @@
 
 #include "tumble.h"
 
+/* 2 pi in float: hertz to angular frequency (softness of contacts and joints) */
+#define TB_TWO_PI_F (2.0f * 3.14159265358979f)
+
 static inline tb_vec2 tb_v2(float x, float y) { return (tb_vec2){x, y}; }
 static inline tb_vec2 tb_add(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x + b.x, a.y + b.y}; }
 static inline tb_vec2 tb_sub(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x - b.x, a.y - b.y}; }

@@ -19,7 +19,7 @@
 
 tb_softness tb_make_softness(float hertz, float zeta, float h) {
   if (hertz == 0.0f) return tb_rigid_softness();
-  float omega = 2.0f * 3.14159265358979f * hertz;
+  float omega = TB_TWO_PI_F * hertz;
   float a1 = 2.0f * zeta + h * omega;
   float a2 = h * omega * a1;
   float a3 = 1.0f / (1.0f + a2);
@@ -178,7 +178,6 @@ static bool has_constraints(const tb_world* w, int body) {
  * settled 30-box column's passes change speeds by float round-off (about
  * 6e-7 m/s) and stop after two. */
 #define TB_CONTACT_MAX_H_OMEGA 3.0f
-#define TB_TWO_PI_F (2.0f * 3.14159265358979f)
 #define TB_RELAX_TOLERANCE 1e-5f /* m/s: 10 um in a second */
 
 /* One relax pass: joints, contacts, the joint trees, all without position
