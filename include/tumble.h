@@ -208,8 +208,8 @@ typedef struct tb_world_def {
    * (m/s, >= 0, default 3). Each substep ends with up to relax_iterations
    * (1 to TB_MAX_RELAX_ITERATIONS, default 8) passes over the contacts and
    * joints without position bias; the passes stop early once one changes no
-   * contact's speed by more than 1e-5 m/s, so a settled scene pays for about
-   * two. Fewer passes are faster; tall stacks and heavy loads on light bodies
+   * contact's speed by more than 1e-5 m/s: a box at rest takes one, a settled
+   * 30-box column two, a sliding box four. Fewer passes are faster; tall stacks and heavy loads on light bodies
    * then jitter and may buckle. The rigid parts of joints that form trees (chains,
    * ragdolls, bridges: any joint graph without a loop through dynamic bodies)
    * are solved exactly and held at a stiffness of 8 / substep (rad/s) with
