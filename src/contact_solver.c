@@ -671,15 +671,16 @@ void tb_contact_solver_reset(tb_world* w) {
   }
 }
 
-float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
+float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, bool backward) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   tb_f4 change = splat(0.0f);
+  int n = w->wide_count, first = backward ? n - 1 : 0, step = backward ? -1 : 1;
   /* one loop per pass kind, each with solve_wide specialised for it */
   if (use_bias)
-    for (int b = 0; b < w->wide_count; ++b)
+    for (int i = 0, b = first; i < n; ++i, b += step)
       solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true, &change);
   else
-    for (int b = 0; b < w->wide_count; ++b)
+    for (int i = 0, b = first; i < n; ++i, b += step)
       solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, &change);
   return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }

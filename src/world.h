@@ -138,9 +138,10 @@ int tb_solve(tb_world* world, float time_step, int substeps);
 bool tb_contact_solver_prepare(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_warm_start(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_reset(tb_world* w);
-/* One pass over the contacts; returns the largest normal speed change a point
- * got in a relax pass (m/s; 0 for a biased pass). */
-float tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias);
+/* One pass over the contacts, in their colour order or (backward) the
+ * reverse; returns the largest normal speed change a point got in a relax
+ * pass (m/s; 0 for a biased pass). */
+float tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use_bias, bool backward);
 /* Pushes deeply overlapping points apart through momentum-free push
  * velocities (ctx->push_velocities, NULL when no point is deep) that move the
  * bodies in the next position update and are then dropped. */
