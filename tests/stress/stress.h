@@ -67,6 +67,11 @@ bool stress_all_finite(const tb_body_id* bodies, int count);
 double stress_peak_speed(const tb_body_id* bodies, int count);
 /* The deepest overlap (m, >= 0) over the touching contacts of these bodies. */
 double stress_deepest_overlap(const tb_body_id* bodies, int count);
+/* The contacts' spring rates omega (rad/s) at the default settings and the
+ * stress step, as tumble.h documents them: 2 pi contact_hertz, twice that
+ * against static bodies, both capped at h omega = 3 per substep. A point of
+ * effective mass m_n is a spring m_n omega^2. */
+void stress_contact_omegas(double* dynamic, double* against_static);
 /* The spacing of floats at |x| (one ULP), in metres. */
 double stress_ulp(float x);
 

@@ -176,6 +176,14 @@ double stress_deepest_overlap(const tb_body_id* bodies, int count) {
   return deepest;
 }
 
+void stress_contact_omegas(double* dynamic, double* against_static) {
+  tb_world_def wd = tb_default_world_def();
+  const double two_pi = 6.283185307179586;
+  double most = 3.0 * STRESS_SUBSTEPS / STRESS_DT;
+  *dynamic = fmin(two_pi * wd.contact_hertz, most);
+  *against_static = fmin(two_pi * 2.0 * wd.contact_hertz, most);
+}
+
 double stress_ulp(float x) {
   float a = fabsf(x);
   return (double)nextafterf(a, INFINITY) - (double)a;

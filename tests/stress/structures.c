@@ -58,24 +58,17 @@ static void judge(stress_result* out, drift d, double limit) {
  *   box on half a box (pyramid: each point at a
  *   face end of one box, the middle of the other): K11 = 3.5/m, K12 = 2/m
  * so with the load W split evenly over the two points a contact closes by
- * c W / (m omega^2) with c = 1, 2 and 2.75. omega is the documented
- * stiffness: 2 pi contact_hertz (twice that against static bodies), capped at
- * h omega = 3 per substep. The sums below are the tops' sinking; the test
+ * c W / (m omega^2) with c = 1, 2 and 2.75 (omega: stress_contact_omegas).
+ * The sums below are the tops' sinking; the test
  * allows 10 % more. Columns match it to 0.1 %; pyramids sink about 20 % less,
  * as the touching neighbours of a row also carry some of the load. */
-static void contact_omegas(double* dynamic, double* against_static) {
-  tb_world_def wd = tb_default_world_def();
-  double most = 3.0 * STRESS_SUBSTEPS / STRESS_DT;
-  *dynamic = fmin(2.0 * PI_F * wd.contact_hertz, most);
-  *against_static = fmin(2.0 * PI_F * 2.0 * wd.contact_hertz, most);
-}
 
 /* The top of a column of `count` boxes: the box k from the top carries k
  * weights on the one below (c = 2), the bottom one count weights on the
  * ground (c = 1). */
 static double column_sinking(int count) {
   double w, ws;
-  contact_omegas(&w, &ws);
+  stress_contact_omegas(&w, &ws);
   double sink = (double)count * STRESS_G / (ws * ws);
   for (int k = 1; k < count; ++k) sink += 2.0 * k * STRESS_G / (w * w);
   return sink;
@@ -87,7 +80,7 @@ static double column_sinking(int count) {
  * load (c = 2.75), or by its ground contact's (c = 1) in the bottom row. */
 static double pyramid_sinking(int base) {
   double w, ws;
-  contact_omegas(&w, &ws);
+  stress_contact_omegas(&w, &ws);
   double* load = calloc((size_t)base + 1, sizeof(double)); /* row from the top, box j */
   double* sink = calloc((size_t)base + 1, sizeof(double));
   double* load_all = calloc((size_t)base * (size_t)(base + 1) / 2, sizeof(double));
