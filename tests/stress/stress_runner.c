@@ -10,13 +10,16 @@
 #include "stress.h"
 
 static const stress_test k_tests[] = {
-    {"stack_15", "15 boxes of 1 m, 30 s, sleep off: top within 5 cm sideways; sinks <= 1.1 x the soft contacts' closing in closed form", true,
-     stress_stack_15},
+    {"stack_15",
+     "15 boxes of 1 m, 30 s, sleep off: top within 5 cm sideways; sinks <= 1.1 x the soft contacts' closing in closed "
+     "form",
+     true, stress_stack_15},
     {"stack_30", "30 boxes of 1 m, 30 s, sleep off: top within 5 cm sideways; sinks <= 1.1 x closed form", false,
      stress_stack_30},
-    {"pyramid_20", "base 20 (210 boxes of 1 m), 30 s, sleep off: top within 5 cm sideways; sinks <= 1.1 x closed form", true,
-     stress_pyramid_20},
-    {"pyramid_100", "base 100 (5,050 boxes of 1 m), 30 s, sleep off: top within 5 cm sideways; sinks <= 1.1 x closed form", false,
+    {"pyramid_20", "base 20 (210 boxes of 1 m), 30 s, sleep off: top within 5 cm sideways; sinks <= 1.1 x closed form",
+     true, stress_pyramid_20},
+    {"pyramid_100",
+     "base 100 (5,050 boxes of 1 m), 30 s, sleep off: top within 5 cm sideways; sinks <= 1.1 x closed form", false,
      stress_pyramid_100},
     {"card_house", "5 levels, 40 cards 2 mm x 40 cm, 30 s, sleep off: top card within 1 cm of its start", false,
      stress_card_house},
@@ -28,8 +31,10 @@ static const stress_test k_tests[] = {
     {"mass_ratio_1000", "same, 1000:1", false, stress_mass_ratio_1000},
     {"ball_and_chain", "1 m ball of 670 link masses on 40 capsule links, swinging 30 s: joint gap < link radius 5 cm",
      true, stress_ball_and_chain},
-    {"overlap_boxes", "20 boxes overlapping 25 %: peak speed <= push cap + g d / cap; at 3 s no overlap 5 mm deeper than its force explains", true,
-     stress_overlap_boxes},
+    {"overlap_boxes",
+     "20 boxes overlapping 25 %: peak speed <= push cap + g d / cap; at 3 s no overlap 5 mm deeper than its force "
+     "explains",
+     true, stress_overlap_boxes},
     {"overlap_circles",
      "256 circles overlapping 25 % in a U: peak speed <= push cap + g d / cap; at 3 s as overlap_boxes", false,
      stress_overlap_circles},
