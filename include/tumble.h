@@ -60,7 +60,7 @@ typedef enum tb_result {
   TB_ERR_TOO_MANY_VERTICES,  /* more than TB_MAX_POLYGON_VERTICES hull points */
   TB_ERR_OUT_OF_MEMORY,
   TB_ERR_CAPACITY,        /* a fixed limit (e.g. number of worlds) is reached */
-  TB_ERR_LOCKED,          /* called from inside tb_world_step (e.g. a callback) */
+  TB_ERR_LOCKED,          /* a change from inside tb_world_step or a query/draw callback */
   TB_ERR_WRONG_BODY_TYPE, /* e.g. mass data on a static body */
   TB_ERR_NUMERIC          /* a NaN appeared during the step and was contained */
 } tb_result;
@@ -1074,8 +1074,9 @@ typedef struct tb_debug_draw {
 /* Callbacks NULL, shapes and joints on, the default colours. */
 tb_debug_draw tb_default_debug_draw(void);
 
-/* Draws the world through the callbacks. Errors: NULL draw, a null or stale
- * world, a call from inside tb_world_step (TB_ERR_LOCKED), non-finite or
+/* Draws the world through the callbacks, which run with the world locked
+ * (reads are fine; changes get TB_ERR_LOCKED). Errors: NULL draw, a null or
+ * stale world, a call from inside tb_world_step or a callback (TB_ERR_LOCKED), non-finite or
  * non-positive normal_length or point_size, drawing bounds that are not finite
  * or have lower > upper (when used). The world is never changed. */
 tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw);

@@ -108,7 +108,9 @@ tb_result tb_destroy_chain(tb_chain_id id) {
   tb_world* w = NULL;
   tb_chain* c = tb_chain_get(id, &w, "tb_destroy_chain");
   if (c == NULL) return tb_last_result();
-  if (w->locked) return tb_fail(w, TB_ERR_LOCKED, "tb_destroy_chain: the world is inside tb_world_step");
+  if (w->locked)
+    return tb_fail(w, TB_ERR_LOCKED,
+                   "tb_destroy_chain: the world is locked (inside tb_world_step, or a query or draw callback)");
   int body = c->body;
   for (int k = 0; k < c->count; ++k) tb_shape_detach(w, c->shapes[k]);
   free_chain(w, id.index1 - 1);

@@ -241,10 +241,15 @@ tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw) {
                      "%s: draw->drawing_bounds must be finite with lower <= upper (got (%g, %g) to (%g, %g))", fn,
                      (double)b.lower.x, (double)b.lower.y, (double)b.upper.x, (double)b.upper.y);
   }
+  /* The callbacks run with the world locked, as a query's do: the pools are
+   * being walked, so a change from inside one is refused (TB_ERR_LOCKED)
+   * instead of freeing what the walk reads next. Reading stays allowed. */
+  w->locked = true;
   if (draw->draw_shapes) draw_shapes(w, draw);
   if (draw->draw_joints) draw_joints(w, draw);
   if (draw->draw_aabbs) draw_aabbs(w, draw);
   if (draw->draw_contact_points || draw->draw_contact_normals) draw_contacts(w, draw);
   if (draw->draw_centers_of_mass || draw->draw_masses) draw_bodies(w, draw);
+  w->locked = false;
   return TB_OK;
 }

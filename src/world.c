@@ -158,7 +158,7 @@ tb_world* tb_world_get(tb_world_id id, const char* fn) {
 tb_world* tb_world_get_unlocked(tb_world_id id, const char* fn) {
   tb_world* w = tb_world_get(id, fn);
   if (w != NULL && w->locked) {
-    tb_fail(w, TB_ERR_LOCKED, "%s: the world is inside tb_world_step", fn);
+    tb_fail(w, TB_ERR_LOCKED, "%s: the world is locked (inside tb_world_step, or a query or draw callback)", fn);
     return NULL;
   }
   return w;
@@ -184,7 +184,7 @@ static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, handle_kind 
     return NULL;
   }
   if (unlocked && w->locked) {
-    tb_fail(w, TB_ERR_LOCKED, "%s: the world is inside tb_world_step", fn);
+    tb_fail(w, TB_ERR_LOCKED, "%s: the world is locked (inside tb_world_step, or a query or draw callback)", fn);
     return NULL;
   }
   if (out != NULL) *out = w;

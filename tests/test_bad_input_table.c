@@ -199,6 +199,9 @@ START_TEST(stale_worlds) {
     REJECT(tb_world_set_integrator(w, TB_INTEGRATOR_RK4), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_get_integrator(w), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_force_field(w, NULL, NULL), TB_ERR_STALE_HANDLE, "world");
+    REJECT(tb_world_set_pre_solve(w, NULL, NULL), TB_ERR_STALE_HANDLE, "world");
+    tb_debug_draw dd0 = tb_default_debug_draw();
+    REJECT(tb_world_draw(w, &dd0), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_get_time(w), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_enable_sleeping(w, false), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_is_sleeping_enabled(w), TB_ERR_STALE_HANDLE, "world");
@@ -229,6 +232,33 @@ START_TEST(stale_worlds) {
     REJECT(tb_world_overlap_aabb(w, ((tb_aabb){{0, 0}, {1, 1}}), f, NULL, NULL), TB_ERR_STALE_HANDLE, "world");
     ck_assert_uint_eq(tb_world_hash(w), 0);
   }
+}
+END_TEST
+
+/* The debug-draw settings: every bad number of each field, and NULL. */
+START_TEST(draw_settings) {
+  REJECT(tb_world_draw(W, NULL), TB_ERR_NULL_ARGUMENT, "draw");
+  for (int i = 0; i < N_BAD_SIZES; ++i) {
+    tb_debug_draw d = tb_default_debug_draw();
+    d.normal_length = bad_sizes[i];
+    REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "normal_length");
+    d = tb_default_debug_draw();
+    d.point_size = bad_sizes[i];
+    REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "point_size");
+  }
+  for (int i = 0; i < N_BAD; ++i) {
+    if (isfinite(bad_reals[i])) continue; /* a huge box is a valid (if large) view */
+    tb_debug_draw d = tb_default_debug_draw();
+    d.use_drawing_bounds = true;
+    d.drawing_bounds = (tb_aabb){{bad_reals[i], 0.0f}, {1.0f, 1.0f}};
+    REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "drawing_bounds");
+    d.drawing_bounds = (tb_aabb){{0.0f, 0.0f}, {1.0f, bad_reals[i]}};
+    REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "drawing_bounds");
+  }
+  tb_debug_draw d = tb_default_debug_draw();
+  d.use_drawing_bounds = true;
+  d.drawing_bounds = (tb_aabb){{0.0f, 1.0f}, {1.0f, 0.0f}}; /* lower.y > upper.y */
+  REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "drawing_bounds");
 }
 END_TEST
 
@@ -997,6 +1027,35 @@ START_TEST(changes_inside_step_callbacks) {
 }
 END_TEST
 
+static reentry draw_reentry;
+
+static void polygon_reenter(tb_transform xf, const tb_vec2* v, int n, float r, tb_color c, void* context) {
+  (void)xf, (void)v, (void)n, (void)r, (void)c, (void)context;
+  try_everything(&draw_reentry);
+}
+
+static void segment_reenter(tb_vec2 p1, tb_vec2 p2, tb_color c, void* context) {
+  (void)p1, (void)p2, (void)c, (void)context;
+  try_everything(&draw_reentry);
+}
+
+/* A draw callback walks the same pools a destroy frees: every change from
+ * inside one is refused, the drawing goes on, and nothing changed. */
+START_TEST(changes_inside_draw_callbacks) {
+  tb_debug_draw d = tb_default_debug_draw();
+  d.draw_solid_polygon = polygon_reenter;
+  d.draw_segment = segment_reenter;
+  d.draw_aabbs = true;
+  draw_reentry = (reentry){0};
+  ck_assert_int_eq(tb_world_draw(W, &d), TB_OK);
+  assert_all_locked(&draw_reentry);
+  assert_unchanged("draw callbacks");
+  /* and the world is unlocked again afterwards */
+  ck_assert_int_eq(tb_body_set_linear_velocity(A, (tb_vec2){0.5f, 0}), TB_OK);
+  ck_assert_int_eq(tb_world_step(W, 1.0f / 60.0f, 4), TB_OK);
+}
+END_TEST
+
 /* ---- NaN through the force field ------------------------------------------- */
 
 static tb_body_id poisoned;
@@ -1097,6 +1156,7 @@ static Suite* bad_input_table_suite(void) {
   tcase_add_checked_fixture(tc, setup, teardown);
   tcase_add_test(tc, world_settings);
   tcase_add_test(tc, stale_worlds);
+  tcase_add_test(tc, draw_settings);
   tcase_add_test(tc, make_polygon_table);
   tcase_add_test(tc, hand_made_polygon_table);
   tcase_add_test(tc, mass_and_collide_functions);
@@ -1108,6 +1168,7 @@ static Suite* bad_input_table_suite(void) {
   tcase_add_test(tc, query_calls);
   tcase_add_test(tc, changes_inside_query_callbacks);
   tcase_add_test(tc, changes_inside_step_callbacks);
+  tcase_add_test(tc, changes_inside_draw_callbacks);
   tcase_add_test(tc, nan_from_the_force_field_is_contained);
   tcase_add_test(tc, clip_to_a_single_point_gives_one_point);
   suite_add_tcase(s, tc);
