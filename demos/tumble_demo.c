@@ -152,7 +152,14 @@ static bool render_frame(renderer* r, const options* o, const tb_scene* scene, t
     tb_counts counts = tb_world_get_counts(world);
     snprintf(stats, sizeof stats, "t = %.2f s   step %.2f ms   %d bodies   %d awake", tb_world_get_time(world), step_ms,
              counts.body_count, counts.awake_body_count);
-    const char* lines[3] = {scene->name, scene->description, stats};
+    /* The description gives the full-size scene; say when --scale shrank it,
+     * so the caption and the body count below it agree. */
+    char description[256];
+    if (o->scale < 1.0f && tb_scene_is_performance(scene))
+      snprintf(description, sizeof description, "%s, shrunk with --scale %.2g", scene->description, (double)o->scale);
+    else
+      snprintf(description, sizeof description, "%s", scene->description);
+    const char* lines[3] = {scene->name, description, stats};
     tbr_gl_overlay(r->gl, lines, 3);
   }
   if (!tbr_gl_flush(r->gl)) fprintf(stderr, "tumble-demo: out of memory, %s is incomplete\n", path);
