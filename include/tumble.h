@@ -599,8 +599,15 @@ typedef struct tb_manifold {
 
 /* Contact manifolds of every pair of shape types, each shape placed by its
  * transform. Swapping the arguments gives the same points with the normal
- * reversed (each unordered pair has one function, named A first). NULL shapes
- * or non-finite transforms give an empty manifold and record an error. */
+ * reversed (each unordered pair has one function, named A first).
+ * Errors give an empty manifold and a message naming the argument (shape a or
+ * b, xfa or xfb): a NULL shape (TB_ERR_NULL_ARGUMENT); a shape that the shape
+ * and mass functions refuse, or a transform that is not finite, beyond
+ * TB_MAX_LENGTH or not a unit rotation (TB_ERR_INVALID_ARGUMENT). Refused
+ * shapes: points, centres or radii not finite or beyond TB_MAX_LENGTH; a
+ * circle or capsule radius not > 0; a polygon radius < 0; capsule centres or
+ * segment points that coincide; a polygon whose count is outside 3 to
+ * TB_MAX_POLYGON_VERTICES or that tb_make_polygon could not have made. */
 tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
 tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
 tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb);
@@ -660,7 +667,9 @@ int tb_chain_get_segment_count(tb_chain_id chain);
 int tb_chain_get_segments(tb_chain_id chain, tb_shape_id* out, int capacity);
 tb_result tb_shape_get_chain_segment(tb_shape_id shape, tb_chain_segment* out);
 
-/* Chain segment manifolds (A is the chain segment; nothing from behind it). */
+/* Chain segment manifolds (A is the chain segment; nothing from behind it).
+ * Errors as for the other manifolds; the chain segment's ghost vertices must
+ * be finite and within TB_MAX_LENGTH too. */
 tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_transform xfa, const tb_circle* b,
                                                 tb_transform xfb);
 tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,

@@ -14,6 +14,8 @@
 
 #include <stdlib.h>
 
+#include "geometry.h"
+#include "manifold.h"
 #include "math_internal.h"
 #include "world.h"
 
@@ -158,11 +160,13 @@ void tb_chains_free(tb_world* w) {
 
 static const tb_manifold no_contact = {.point_count = 0};
 
-/* NULL shapes give an empty manifold and an error, as for the other pairs. */
-static bool chain_args_ok(const void* a, const void* b, const char* fn) {
-  if (a != NULL && b != NULL) return true;
-  tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: shape %s is NULL", fn, a == NULL ? "a" : "b");
-  return false;
+/* A chain segment as the public functions check it: its segment as a
+ * segment shape, and ghost vertices that are finite points. */
+static const char* check_chain_segment(const tb_chain_segment* cs) {
+  const char* why = tb_check_segment(&cs->segment);
+  if (why == NULL && !(tb_point_ok(cs->ghost1) && tb_point_ok(cs->ghost2)))
+    why = "chain segment ghost vertices are not finite or beyond TB_MAX_LENGTH";
+  return why;
 }
 
 /* The filter described at the top, in the chain segment's frame. center_b is
@@ -191,26 +195,50 @@ static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_ve
   return mine ? m : no_contact;
 }
 
-tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_transform xfa, const tb_circle* b,
-                                                tb_transform xfb) {
-  if (!chain_args_ok(a, b, "tb_collide_chain_segment_and_circle")) return no_contact;
-  tb_manifold m = tb_collide_segment_and_circle(&a->segment, xfa, b, xfb);
-  if (m.point_count == 0) return m; /* also a bad transform, reported by the segment function */
+tb_manifold tb_collide_chain_segment_and_circle_unchecked(const tb_chain_segment* a, tb_transform xfa,
+                                                          const tb_circle* b, tb_transform xfb) {
+  tb_manifold m = tb_collide_segment_and_circle_unchecked(&a->segment, xfa, b, xfb);
+  if (m.point_count == 0) return m;
   return one_sided(a, xfa, tb_transform_point(xfb, b->center), m);
 }
 
-tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,
-                                                 tb_transform xfb) {
-  if (!chain_args_ok(a, b, "tb_collide_chain_segment_and_capsule")) return no_contact;
-  tb_manifold m = tb_collide_segment_and_capsule(&a->segment, xfa, b, xfb);
+tb_manifold tb_collide_chain_segment_and_capsule_unchecked(const tb_chain_segment* a, tb_transform xfa,
+                                                           const tb_capsule* b, tb_transform xfb) {
+  tb_manifold m = tb_collide_segment_and_capsule_unchecked(&a->segment, xfa, b, xfb);
   if (m.point_count == 0) return m;
   return one_sided(a, xfa, tb_transform_point(xfb, tb_lerp(b->center1, b->center2, 0.5f)), m);
 }
 
-tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
-                                                 tb_transform xfb) {
-  if (!chain_args_ok(a, b, "tb_collide_chain_segment_and_polygon")) return no_contact;
-  tb_manifold m = tb_collide_segment_and_polygon(&a->segment, xfa, b, xfb);
+tb_manifold tb_collide_chain_segment_and_polygon_unchecked(const tb_chain_segment* a, tb_transform xfa,
+                                                           const tb_polygon* b, tb_transform xfb) {
+  tb_manifold m = tb_collide_segment_and_polygon_unchecked(&a->segment, xfa, b, xfb);
   if (m.point_count == 0) return m;
   return one_sided(a, xfa, tb_transform_point(xfb, b->centroid), m);
 }
+
+/* The public forms check their arguments as the other tb_collide_* do (see
+ * tb_collide_args_ok) and give an empty manifold on bad input. */
+#define WHY(check, shape) ((shape) != NULL ? check(shape) : NULL)
+
+tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_transform xfa, const tb_circle* b,
+                                                tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(check_chain_segment, a), xfa, b, WHY(tb_check_circle, b), xfb))
+    return no_contact;
+  return tb_collide_chain_segment_and_circle_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,
+                                                 tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(check_chain_segment, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+    return no_contact;
+  return tb_collide_chain_segment_and_capsule_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
+                                                 tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(check_chain_segment, a), xfa, b, WHY(tb_check_polygon, b), xfb))
+    return no_contact;
+  return tb_collide_chain_segment_and_polygon_unchecked(a, xfa, b, xfb);
+}
+
+#undef WHY

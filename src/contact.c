@@ -14,7 +14,8 @@
  * in the function's name as A. A contact stores its shapes in that order.
  * Each writes the manifold into the contact; polygon pairs, the bulk of a
  * box scene, write it in place (tb_collide_polygons_into), the others copy
- * the returned one. */
+ * the returned one. These are the unchecked forms of the public tb_collide_*
+ * functions: the shapes were vetted when they were made. */
 
 typedef void collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out);
 
@@ -22,17 +23,17 @@ typedef void collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, 
   static void name(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out) { \
     *out = call(&a->geom.fa, xfa, &b->geom.fb, xfb);                                                             \
   }
-COLLIDE(circles, circle, circle, tb_collide_circles)
-COLLIDE(capsule_circle, capsule, circle, tb_collide_capsule_and_circle)
-COLLIDE(capsules, capsule, capsule, tb_collide_capsules)
-COLLIDE(segment_circle, segment, circle, tb_collide_segment_and_circle)
-COLLIDE(segment_capsule, segment, capsule, tb_collide_segment_and_capsule)
-COLLIDE(segment_polygon, segment, polygon, tb_collide_segment_and_polygon)
-COLLIDE(polygon_circle, polygon, circle, tb_collide_polygon_and_circle)
-COLLIDE(polygon_capsule, polygon, capsule, tb_collide_polygon_and_capsule)
-COLLIDE(chain_circle, chain_segment, circle, tb_collide_chain_segment_and_circle)
-COLLIDE(chain_capsule, chain_segment, capsule, tb_collide_chain_segment_and_capsule)
-COLLIDE(chain_polygon, chain_segment, polygon, tb_collide_chain_segment_and_polygon)
+COLLIDE(circles, circle, circle, tb_collide_circles_unchecked)
+COLLIDE(capsule_circle, capsule, circle, tb_collide_capsule_and_circle_unchecked)
+COLLIDE(capsules, capsule, capsule, tb_collide_capsules_unchecked)
+COLLIDE(segment_circle, segment, circle, tb_collide_segment_and_circle_unchecked)
+COLLIDE(segment_capsule, segment, capsule, tb_collide_segment_and_capsule_unchecked)
+COLLIDE(segment_polygon, segment, polygon, tb_collide_segment_and_polygon_unchecked)
+COLLIDE(polygon_circle, polygon, circle, tb_collide_polygon_and_circle_unchecked)
+COLLIDE(polygon_capsule, polygon, capsule, tb_collide_polygon_and_capsule_unchecked)
+COLLIDE(chain_circle, chain_segment, circle, tb_collide_chain_segment_and_circle_unchecked)
+COLLIDE(chain_capsule, chain_segment, capsule, tb_collide_chain_segment_and_capsule_unchecked)
+COLLIDE(chain_polygon, chain_segment, polygon, tb_collide_chain_segment_and_polygon_unchecked)
 #undef COLLIDE
 
 static void polygons(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out) {

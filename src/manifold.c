@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "geometry.h"
 #include "math_internal.h"
 
 #if !defined(__GNUC__)
@@ -50,11 +51,21 @@ static bool transform_ok(tb_transform xf) {
          (fabsf(xf.q.c * xf.q.c + xf.q.s * xf.q.s - 1.0f) <= 1e-3f);
 }
 
-/* Public entry points reject NULL shapes and non-finite transforms with an empty
- * manifold (the shapes themselves are trusted: tb_check_* vetted them). */
-static inline bool args_ok(const void* a, tb_transform xfa, const void* b, tb_transform xfb, const char* fn) {
+/* The public entry points' checks (the narrow phase calls the _unchecked
+ * forms: its shapes were vetted when they were made, its transforms come from
+ * the solver). NULL shapes, then the shapes as the mass and shape functions
+ * check them (why_a, why_b: tb_check_*'s answer, NULL when fine), then the
+ * transforms. A polygon's count must be checked before anything reads it:
+ * the cores below hold TB_MAX_POLYGON_VERTICES points. */
+bool tb_collide_args_ok(const char* fn, const void* a, const char* why_a, tb_transform xfa, const void* b,
+                        const char* why_b, tb_transform xfb) {
   if (a == NULL || b == NULL) {
     tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: shape %s is NULL", fn, a == NULL ? "a" : "b");
+    return false;
+  }
+  if (why_a != NULL || why_b != NULL) {
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: shape %s: %s", fn, why_a != NULL ? "a" : "b",
+            why_a != NULL ? why_a : why_b);
     return false;
   }
   if (!transform_ok(xfa) || !transform_ok(xfb)) {
@@ -136,12 +147,10 @@ static inline void point_contact(local_manifold* m, tb_vec2 pa, tb_vec2 pb, floa
 
 /* ------------------------------------------------------ circle contacts -- */
 
-tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+tb_manifold tb_collide_circles_unchecked(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_circles")) {
-    tb_vec2 cb = tb_transform_point(relative_transform(xfa, xfb), b->center);
-    point_contact(&m, a->center, cb, a->radius, b->radius, tb_v2(1.0f, 0.0f));
-  }
+  tb_vec2 cb = tb_transform_point(relative_transform(xfa, xfb), b->center);
+  point_contact(&m, a->center, cb, a->radius, b->radius, tb_v2(1.0f, 0.0f));
   return to_world(&m, xfa);
 }
 
@@ -171,17 +180,17 @@ static inline void segment_circle(local_manifold* m, tb_vec2 p1, tb_vec2 p2, flo
   add_point(m, tb_mul_add(c, ra - s + 0.5f * sep, n), sep, 0u);
 }
 
-tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+tb_manifold tb_collide_capsule_and_circle_unchecked(const tb_capsule* a, tb_transform xfa, const tb_circle* b,
+                                                    tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_capsule_and_circle"))
-    segment_circle(&m, a->center1, a->center2, a->radius, b, xfa, xfb);
+  segment_circle(&m, a->center1, a->center2, a->radius, b, xfa, xfb);
   return to_world(&m, xfa);
 }
 
-tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+tb_manifold tb_collide_segment_and_circle_unchecked(const tb_segment* a, tb_transform xfa, const tb_circle* b,
+                                                    tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_circle"))
-    segment_circle(&m, a->point1, a->point2, 0.0f, b, xfa, xfb);
+  segment_circle(&m, a->point1, a->point2, 0.0f, b, xfa, xfb);
   return to_world(&m, xfa);
 }
 
@@ -220,10 +229,10 @@ static inline void polygon_circle(local_manifold* m, const tb_polygon* a, tb_vec
   add_point(m, tb_mul_add(c, a->radius - s + 0.5f * sep, n), sep, 0u);
 }
 
-tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+tb_manifold tb_collide_polygon_and_circle_unchecked(const tb_polygon* a, tb_transform xfa, const tb_circle* b,
+                                                    tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_polygon_and_circle"))
-    polygon_circle(&m, a, tb_transform_point(relative_transform(xfa, xfb), b->center), b->radius);
+  polygon_circle(&m, a, tb_transform_point(relative_transform(xfa, xfb), b->center), b->radius);
   return to_world(&m, xfa);
 }
 
@@ -552,72 +561,58 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
   m->normal = fp.flip ? tb_neg(fp.n) : fp.n;
 }
 
-/* ------------------------------------------------------- public wrappers -- */
+/* ------------------------------------------- unchecked pairs of cores -- */
 
-tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb) {
+tb_manifold tb_collide_capsules_unchecked(const tb_capsule* a, tb_transform xfa, const tb_capsule* b,
+                                          tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_capsules")) {
-    tb_transform rel = relative_transform(xfa, xfb);
-    core ca, cb;
-    segment_core(&ca, a->center1, a->center2, a->radius);
-    segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
-    collide_cores(&m, &ca, &cb);
-  }
+  tb_transform rel = relative_transform(xfa, xfb);
+  core ca, cb;
+  segment_core(&ca, a->center1, a->center2, a->radius);
+  segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
+  collide_cores(&m, &ca, &cb);
   return to_world(&m, xfa);
 }
 
-tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
-                                           tb_transform xfb) {
+tb_manifold tb_collide_segment_and_capsule_unchecked(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
+                                                     tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_capsule")) {
-    tb_transform rel = relative_transform(xfa, xfb);
-    core ca, cb;
-    segment_core(&ca, a->point1, a->point2, 0.0f);
-    segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
-    collide_cores(&m, &ca, &cb);
-  }
+  tb_transform rel = relative_transform(xfa, xfb);
+  core ca, cb;
+  segment_core(&ca, a->point1, a->point2, 0.0f);
+  segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
+  collide_cores(&m, &ca, &cb);
   return to_world(&m, xfa);
 }
 
-tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
-                                           tb_transform xfb) {
+tb_manifold tb_collide_segment_and_polygon_unchecked(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
+                                                     tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_segment_and_polygon")) {
-    core ca, cb;
-    segment_core(&ca, a->point1, a->point2, 0.0f);
-    polygon_core(&cb, b, relative_transform(xfa, xfb));
-    collide_cores(&m, &ca, &cb);
-  }
+  core ca, cb;
+  segment_core(&ca, a->point1, a->point2, 0.0f);
+  polygon_core(&cb, b, relative_transform(xfa, xfb));
+  collide_cores(&m, &ca, &cb);
   return to_world(&m, xfa);
 }
 
-tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
-                                           tb_transform xfb) {
+tb_manifold tb_collide_polygon_and_capsule_unchecked(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
+                                                     tb_transform xfb) {
   local_manifold m = {0};
-  if (args_ok(a, xfa, b, xfb, "tb_collide_polygon_and_capsule")) {
-    tb_transform rel = relative_transform(xfa, xfb);
-    core ca, cb;
-    local_polygon_core(&ca, a);
-    segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
-    collide_cores(&m, &ca, &cb);
-  }
+  tb_transform rel = relative_transform(xfa, xfb);
+  core ca, cb;
+  local_polygon_core(&ca, a);
+  segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
+  collide_cores(&m, &ca, &cb);
   return to_world(&m, xfa);
 }
 
-/* tb_collide_polygons in A's frame */
+/* two polygons in A's frame */
 static void polygons_local(local_manifold* m, const tb_polygon* a, tb_transform xfa, const tb_polygon* b,
                            tb_transform xfb) {
-  if (!args_ok(a, xfa, b, xfb, "tb_collide_polygons")) return;
   core ca, cb;
   local_polygon_core(&ca, a);
   polygon_core(&cb, b, relative_transform(xfa, xfb));
   collide_cores(m, &ca, &cb);
-}
-
-tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb) {
-  local_manifold m = {0};
-  polygons_local(&m, a, xfa, b, xfb);
-  return to_world(&m, xfa);
 }
 
 void tb_collide_polygons_into(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb,
@@ -626,3 +621,70 @@ void tb_collide_polygons_into(const tb_polygon* a, tb_transform xfa, const tb_po
   polygons_local(&m, a, xfa, b, xfb);
   store_world(&m, xfa, out);
 }
+
+/* ------------------------------------------------- checked public entries -- */
+
+static const tb_manifold no_contact = {.point_count = 0};
+
+/* tb_check_*'s verdict on a shape that may be NULL (NULL is reported first) */
+#define WHY(check, shape) ((shape) != NULL ? check(shape) : NULL)
+
+tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_circle, a), xfa, b, WHY(tb_check_circle, b), xfb))
+    return no_contact;
+  return tb_collide_circles_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_capsule, a), xfa, b, WHY(tb_check_circle, b), xfb))
+    return no_contact;
+  return tb_collide_capsule_and_circle_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_capsule, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+    return no_contact;
+  return tb_collide_capsules_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_segment, a), xfa, b, WHY(tb_check_circle, b), xfb))
+    return no_contact;
+  return tb_collide_segment_and_circle_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
+                                           tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_segment, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+    return no_contact;
+  return tb_collide_segment_and_capsule_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
+                                           tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_segment, a), xfa, b, WHY(tb_check_polygon, b), xfb))
+    return no_contact;
+  return tb_collide_segment_and_polygon_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_polygon, a), xfa, b, WHY(tb_check_circle, b), xfb))
+    return no_contact;
+  return tb_collide_polygon_and_circle_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
+                                           tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_polygon, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+    return no_contact;
+  return tb_collide_polygon_and_capsule_unchecked(a, xfa, b, xfb);
+}
+
+tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb) {
+  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_polygon, a), xfa, b, WHY(tb_check_polygon, b), xfb))
+    return no_contact;
+  local_manifold m = {0};
+  polygons_local(&m, a, xfa, b, xfb);
+  return to_world(&m, xfa);
+}
+#undef WHY

@@ -20,6 +20,7 @@
 #ifndef TB_MANIFOLD_H
 #define TB_MANIFOLD_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "tumble.h"
@@ -31,9 +32,42 @@ static inline uint32_t tb_make_feature_id(uint32_t index_a, uint32_t type_a, uin
   return (index_a & 0xffu) | (index_b & 0xffu) << 8 | type_a << 16 | type_b << 24;
 }
 
-/* tb_collide_polygons for the narrow phase, which keeps the manifold in the
- * contact: written there field by field (copied from a returned one, it would
- * be read back wider than it was just written, a stall; see manifold.c). */
+/* The public functions' checks: false (and the error recorded, naming fn and
+ * the argument) for a NULL shape, a shape that tb_check_* refused (why_a,
+ * why_b: its answer, NULL when the shape is fine or NULL) or a transform that
+ * is not finite, beyond TB_MAX_LENGTH or not a unit rotation. */
+bool tb_collide_args_ok(const char* fn, const void* a, const char* why_a, tb_transform xfa, const void* b,
+                        const char* why_b, tb_transform xfb);
+
+/* The narrow phase's collide functions: the public ones without their checks.
+ * The world's shapes were vetted when they were made and its transforms come
+ * from the solver, so the step pays nothing per contact for the checks.
+ * These trust what they get: a polygon of count 100 overflows the stack. */
+tb_manifold tb_collide_circles_unchecked(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb);
+tb_manifold tb_collide_capsule_and_circle_unchecked(const tb_capsule* a, tb_transform xfa, const tb_circle* b,
+                                                    tb_transform xfb);
+tb_manifold tb_collide_capsules_unchecked(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb);
+tb_manifold tb_collide_segment_and_circle_unchecked(const tb_segment* a, tb_transform xfa, const tb_circle* b,
+                                                    tb_transform xfb);
+tb_manifold tb_collide_segment_and_capsule_unchecked(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
+                                                     tb_transform xfb);
+tb_manifold tb_collide_segment_and_polygon_unchecked(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
+                                                     tb_transform xfb);
+tb_manifold tb_collide_polygon_and_circle_unchecked(const tb_polygon* a, tb_transform xfa, const tb_circle* b,
+                                                    tb_transform xfb);
+tb_manifold tb_collide_polygon_and_capsule_unchecked(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
+                                                     tb_transform xfb);
+/* chain.c */
+tb_manifold tb_collide_chain_segment_and_circle_unchecked(const tb_chain_segment* a, tb_transform xfa,
+                                                          const tb_circle* b, tb_transform xfb);
+tb_manifold tb_collide_chain_segment_and_capsule_unchecked(const tb_chain_segment* a, tb_transform xfa,
+                                                           const tb_capsule* b, tb_transform xfb);
+tb_manifold tb_collide_chain_segment_and_polygon_unchecked(const tb_chain_segment* a, tb_transform xfa,
+                                                           const tb_polygon* b, tb_transform xfb);
+
+/* Two polygons, unchecked, for the narrow phase, which keeps the manifold in
+ * the contact: written there field by field (copied from a returned one, it
+ * would be read back wider than it was just written, a stall; see manifold.c). */
 void tb_collide_polygons_into(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb,
                               tb_manifold* out);
 

@@ -451,6 +451,163 @@ START_TEST(mass_and_collide_functions) {
   tb_clear_error();
   ck_assert_int_eq(tb_collide_chain_segment_and_circle(&chain, id, NULL, id).point_count, 0);
   ck_assert_int_eq(tb_last_result(), TB_ERR_NULL_ARGUMENT);
+
+  /* bad shapes: every collide function checks its shapes as the mass and
+   * shape functions do (a polygon of count 100 overflowed the stack, 9 read
+   * past the vertices, NaN circles gave TB_OK) and gives an empty manifold */
+#define REJECT_COLLIDE(call, code, arg, word)                                                                      \
+  do {                                                                                                             \
+    tb_clear_error();                                                                                              \
+    tb_manifold m_ = (call);                                                                                       \
+    ck_assert_msg(m_.point_count == 0, "%s: %d points", #call, m_.point_count);                                    \
+    ck_assert_msg(tb_last_result() == (code), "%s: got %s, want %s (%s)", #call, tb_result_name(tb_last_result()), \
+                  tb_result_name(code), tb_last_error());                                                          \
+    ck_assert_msg(strstr(tb_last_error(), (arg)) != NULL && strstr(tb_last_error(), (word)) != NULL,               \
+                  "%s: message '%s' lacks '%s' or '%s'", #call, tb_last_error(), (arg), (word));                   \
+    assert_unchanged(#call);                                                                                       \
+  } while (0)
+  const tb_result bad = TB_ERR_INVALID_ARGUMENT;
+  /* NULL shapes, each argument of each function */
+  const tb_result null = TB_ERR_NULL_ARGUMENT;
+  REJECT_COLLIDE(tb_collide_circles(NULL, id, &circle, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_circles(&circle, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_capsule_and_circle(NULL, id, &circle, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_capsule_and_circle(&capsule, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_capsules(NULL, id, &capsule, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_capsules(&capsule, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_segment_and_circle(NULL, id, &circle, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_segment_and_circle(&segment, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_segment_and_capsule(NULL, id, &capsule, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_segment_and_capsule(&segment, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_segment_and_polygon(NULL, id, &box, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_segment_and_polygon(&segment, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_polygon_and_circle(NULL, id, &circle, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_polygon_and_circle(&box, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_polygon_and_capsule(NULL, id, &capsule, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_polygon_and_capsule(&box, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_polygons(NULL, id, &box, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_polygons(&box, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_chain_segment_and_circle(NULL, id, &circle, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_chain_segment_and_circle(&chain, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_chain_segment_and_capsule(NULL, id, &capsule, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_chain_segment_and_capsule(&chain, id, NULL, id), null, "shape b", "NULL");
+  REJECT_COLLIDE(tb_collide_chain_segment_and_polygon(NULL, id, &box, id), null, "shape a", "NULL");
+  REJECT_COLLIDE(tb_collide_chain_segment_and_polygon(&chain, id, NULL, id), null, "shape b", "NULL");
+
+  /* circles: NaN, infinite or huge centres; NaN, infinite, huge, zero or negative radii */
+  tb_circle bad_circles[N_BAD + N_BAD_SIZES];
+  const char* circle_words[N_BAD + N_BAD_SIZES];
+  for (int i = 0; i < N_BAD; ++i) {
+    bad_circles[i] = (tb_circle){{bad_reals[i], 0}, 1.0f};
+    circle_words[i] = "circle center";
+  }
+  for (int i = 0; i < N_BAD_SIZES; ++i) {
+    bad_circles[N_BAD + i] = (tb_circle){{0, 0}, bad_sizes[i]};
+    circle_words[N_BAD + i] = "circle radius";
+  }
+  for (int i = 0; i < N_BAD + N_BAD_SIZES; ++i) {
+    const tb_circle* c = &bad_circles[i];
+    const char* w = circle_words[i];
+    REJECT_COLLIDE(tb_collide_circles(c, id, &circle, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_circles(&circle, id, c, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_capsule_and_circle(&capsule, id, c, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_segment_and_circle(&segment, id, c, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_polygon_and_circle(&box, id, c, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_chain_segment_and_circle(&chain, id, c, id), bad, "shape b", w);
+  }
+
+  /* capsules: a NaN, infinite or huge end; NaN, infinite, huge, zero or negative radii; one point */
+  tb_capsule bad_capsules[N_BAD + N_BAD_SIZES + 1];
+  const char* capsule_words[N_BAD + N_BAD_SIZES + 1];
+  for (int i = 0; i < N_BAD; ++i) {
+    bad_capsules[i] = (tb_capsule){{0, 0}, {1, bad_reals[i]}, 0.5f};
+    capsule_words[i] = "capsule centers";
+  }
+  for (int i = 0; i < N_BAD_SIZES; ++i) {
+    bad_capsules[N_BAD + i] = (tb_capsule){{0, 0}, {1, 0}, bad_sizes[i]};
+    capsule_words[N_BAD + i] = "capsule radius";
+  }
+  bad_capsules[N_BAD + N_BAD_SIZES] = (tb_capsule){{1, 1}, {1, 1}, 0.5f};
+  capsule_words[N_BAD + N_BAD_SIZES] = "coincide";
+  for (int i = 0; i < N_BAD + N_BAD_SIZES + 1; ++i) {
+    const tb_capsule* c = &bad_capsules[i];
+    const char* w = capsule_words[i];
+    REJECT_COLLIDE(tb_collide_capsule_and_circle(c, id, &circle, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_capsules(c, id, &capsule, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_capsules(&capsule, id, c, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_segment_and_capsule(&segment, id, c, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_polygon_and_capsule(&box, id, c, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_chain_segment_and_capsule(&chain, id, c, id), bad, "shape b", w);
+  }
+
+  /* segments and chain segments: a NaN, infinite or huge end; one point; bad ghost vertices */
+  for (int i = 0; i <= N_BAD; ++i) {
+    tb_segment s = {{i < N_BAD ? bad_reals[i] : 1.0f, 0}, {1, 0}};
+    const char* w = i < N_BAD ? "segment points" : "coincide";
+    REJECT_COLLIDE(tb_collide_segment_and_circle(&s, id, &circle, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_segment_and_capsule(&s, id, &capsule, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_segment_and_polygon(&s, id, &box, id), bad, "shape a", w);
+    tb_chain_segment cs = chain;
+    cs.segment = s;
+    REJECT_COLLIDE(tb_collide_chain_segment_and_circle(&cs, id, &circle, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_chain_segment_and_capsule(&cs, id, &capsule, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_chain_segment_and_polygon(&cs, id, &box, id), bad, "shape a", w);
+    if (i == N_BAD) continue;
+    cs = chain;
+    (i % 2 ? &cs.ghost1 : &cs.ghost2)->y = bad_reals[i];
+    REJECT_COLLIDE(tb_collide_chain_segment_and_circle(&cs, id, &circle, id), bad, "shape a", "ghost");
+    REJECT_COLLIDE(tb_collide_chain_segment_and_capsule(&cs, id, &capsule, id), bad, "shape a", "ghost");
+    REJECT_COLLIDE(tb_collide_chain_segment_and_polygon(&cs, id, &box, id), bad, "shape a", "ghost");
+  }
+
+  /* polygons: counts outside 3..TB_MAX_POLYGON_VERTICES (9 read past the
+   * arrays, 100 overflowed the stack), NaN, infinite or huge vertices, bad
+   * radii, and a clockwise (hand-made) one */
+  const int bad_counts[] = {0, 2, TB_MAX_POLYGON_VERTICES + 1, 100, -1};
+  enum { N_COUNTS = sizeof bad_counts / sizeof bad_counts[0] };
+  tb_polygon bad_polygons[N_COUNTS + N_BAD + N_BAD_NN + 1];
+  const char* polygon_words[N_COUNTS + N_BAD + N_BAD_NN + 1];
+  int n_polygons = 0;
+  for (int i = 0; i < N_COUNTS; ++i) {
+    bad_polygons[n_polygons] = box;
+    bad_polygons[n_polygons].count = bad_counts[i];
+    polygon_words[n_polygons++] = "polygon count";
+  }
+  for (int i = 0; i < N_BAD; ++i) {
+    bad_polygons[n_polygons] = box;
+    bad_polygons[n_polygons].vertices[1].x = bad_reals[i];
+    polygon_words[n_polygons++] = "polygon vertex";
+  }
+  for (int i = 0; i < N_BAD_NN; ++i) {
+    bad_polygons[n_polygons] = box;
+    bad_polygons[n_polygons].radius = bad_non_negatives[i];
+    polygon_words[n_polygons++] = "polygon radius";
+  }
+  bad_polygons[n_polygons] = box;
+  for (int i = 0; i < 4; ++i) bad_polygons[n_polygons].vertices[i] = box.vertices[3 - i];
+  polygon_words[n_polygons++] = "convex";
+  for (int i = 0; i < n_polygons; ++i) {
+    const tb_polygon* p = &bad_polygons[i];
+    const char* w = polygon_words[i];
+    REJECT_COLLIDE(tb_collide_segment_and_polygon(&segment, id, p, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_polygon_and_circle(p, id, &circle, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_polygon_and_capsule(p, id, &capsule, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_polygons(p, id, &box, id), bad, "shape a", w);
+    REJECT_COLLIDE(tb_collide_polygons(&box, id, p, id), bad, "shape b", w);
+    REJECT_COLLIDE(tb_collide_chain_segment_and_polygon(&chain, id, p, id), bad, "shape b", w);
+  }
+#undef REJECT_COLLIDE
+
+  /* the good shapes of these rows do touch: the rows above are empty because
+   * they were refused, not because nothing was there */
+  tb_clear_error();
+  ck_assert_int_eq(tb_collide_circles(&circle, id, &circle, id).point_count, 1);
+  ck_assert_int_eq(tb_collide_capsules(&capsule, id, &capsule, id).point_count, 2);
+  ck_assert_int_gt(tb_collide_segment_and_polygon(&segment, id, &box, id).point_count, 0);
+  ck_assert_int_gt(tb_collide_polygons(&box, id, &box, id).point_count, 0);
+  ck_assert_int_gt(
+      tb_collide_chain_segment_and_polygon(&chain, id, &box, (tb_transform){{0, 0.9f}, {1, 0}}).point_count, 0);
+  ck_assert_int_eq(tb_last_result(), TB_OK);
 }
 END_TEST
 
