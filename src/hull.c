@@ -134,15 +134,17 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
 
 static bool half_extent_ok(float h) { return h > 0.0f && tb_length_ok(h); }
 
-tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb_polygon* out) {
-  if (out == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_make_box: out is NULL");
+/* The three box makers share this; fn names the one the caller called (each
+ * message used to say "tb_make_box" whichever it was). */
+static tb_result make_box(const char* fn, float hx, float hy, tb_vec2 center, float angle, tb_polygon* out) {
+  if (out == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: out is NULL", fn);
   if (!half_extent_ok(hx))
-    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: hx = %g must be > 0 and finite", (double)hx);
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: hx = %g must be > 0 and finite", fn, (double)hx);
   if (!half_extent_ok(hy))
-    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: hy = %g must be > 0 and finite", (double)hy);
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: hy = %g must be > 0 and finite", fn, (double)hy);
   if (!tb_point_ok(center))
-    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: center is not finite or beyond TB_MAX_LENGTH");
-  if (!isfinite(angle)) return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_box: angle is not finite");
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: center is not finite or beyond TB_MAX_LENGTH", fn);
+  if (!isfinite(angle)) return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: angle is not finite", fn);
   tb_transform xf = {center, angle == 0.0f ? (tb_rot){1.0f, 0.0f} : tb_make_rot(angle)};
   const tb_vec2 corners[4] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
   const tb_vec2 normals[4] = {{0.0f, -1.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {-1.0f, 0.0f}};
@@ -158,21 +160,24 @@ tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb
    * points: refuse it rather than hand out a polygon no shape accepts */
   const char* why = tb_check_polygon(&box);
   if (why != NULL)
-    return tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON, "tb_make_box: a box of half-extents %g x %g at (%g, %g): %s",
-                   (double)hx, (double)hy, (double)center.x, (double)center.y, why);
+    return tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON, "%s: a box of half-extents %g x %g at (%g, %g): %s", fn, (double)hx,
+                   (double)hy, (double)center.x, (double)center.y, why);
   *out = box;
   return TB_OK;
 }
 
+tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb_polygon* out) {
+  return make_box(__func__, hx, hy, center, angle, out);
+}
+
 tb_result tb_make_box(float hx, float hy, tb_polygon* out) {
-  return tb_make_offset_box(hx, hy, (tb_vec2){0.0f, 0.0f}, 0.0f, out);
+  return make_box(__func__, hx, hy, (tb_vec2){0.0f, 0.0f}, 0.0f, out);
 }
 
 tb_result tb_make_rounded_box(float hx, float hy, float radius, tb_polygon* out) {
   if (radius < 0.0f || !tb_length_ok(radius))
-    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_rounded_box: radius %g must be >= 0 and finite",
-                   (double)radius);
-  tb_result r = tb_make_box(hx, hy, out);
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: radius %g must be >= 0 and finite", __func__, (double)radius);
+  tb_result r = make_box(__func__, hx, hy, (tb_vec2){0.0f, 0.0f}, 0.0f, out);
   if (r == TB_OK) out->radius = radius;
   return r;
 }

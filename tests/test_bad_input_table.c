@@ -327,23 +327,34 @@ START_TEST(make_polygon_table) {
   /* boxes: every size, centre and angle argument */
   for (int i = 0; i < N_BAD_SIZES; ++i) {
     float x = bad_sizes[i];
-    REJECT(tb_make_box(x, 1.0f, &out), TB_ERR_INVALID_ARGUMENT, "hx");
-    REJECT(tb_make_box(1.0f, x, &out), TB_ERR_INVALID_ARGUMENT, "hy");
-    REJECT(tb_make_offset_box(x, 1.0f, (tb_vec2){0, 0}, 0.0f, &out), TB_ERR_INVALID_ARGUMENT, "hx");
-    REJECT(tb_make_rounded_box(1.0f, x, 0.1f, &out), TB_ERR_INVALID_ARGUMENT, "hy");
+    /* each box maker names itself (offset and rounded boxes said "tb_make_box") */
+    REJECT(tb_make_box(x, 1.0f, &out), TB_ERR_INVALID_ARGUMENT, "tb_make_box: hx");
+    REJECT(tb_make_box(1.0f, x, &out), TB_ERR_INVALID_ARGUMENT, "tb_make_box: hy");
+    REJECT(tb_make_offset_box(x, 1.0f, (tb_vec2){0, 0}, 0.0f, &out), TB_ERR_INVALID_ARGUMENT, "tb_make_offset_box: hx");
+    REJECT(tb_make_offset_box(1.0f, x, (tb_vec2){0, 0}, 0.0f, &out), TB_ERR_INVALID_ARGUMENT, "tb_make_offset_box: hy");
+    REJECT(tb_make_rounded_box(x, 1.0f, 0.1f, &out), TB_ERR_INVALID_ARGUMENT, "tb_make_rounded_box: hx");
+    REJECT(tb_make_rounded_box(1.0f, x, 0.1f, &out), TB_ERR_INVALID_ARGUMENT, "tb_make_rounded_box: hy");
   }
   for (int i = 0; i < N_BAD; ++i) {
     float x = bad_reals[i];
-    REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){x, 0}, 0.0f, &out), TB_ERR_INVALID_ARGUMENT, "center");
+    REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){x, 0}, 0.0f, &out), TB_ERR_INVALID_ARGUMENT,
+           "tb_make_offset_box: center");
+    REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){0, x}, 0.0f, &out), TB_ERR_INVALID_ARGUMENT,
+           "tb_make_offset_box: center");
     if (isfinite(x)) continue; /* any finite angle is an angle */
-    REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){0, 0}, x, &out), TB_ERR_INVALID_ARGUMENT, "angle");
+    REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){0, 0}, x, &out), TB_ERR_INVALID_ARGUMENT,
+           "tb_make_offset_box: angle");
   }
-  REJECT(tb_make_rounded_box(1.0f, 1.0f, -0.1f, &out), TB_ERR_INVALID_ARGUMENT, "radius");
-  REJECT(tb_make_rounded_box(1.0f, 1.0f, NAN, &out), TB_ERR_INVALID_ARGUMENT, "radius");
-  REJECT(tb_make_box(1.0f, 1.0f, NULL), TB_ERR_NULL_ARGUMENT, "out");
+  for (int i = 0; i < N_BAD_NN; ++i)
+    REJECT(tb_make_rounded_box(1.0f, 1.0f, bad_non_negatives[i], &out), TB_ERR_INVALID_ARGUMENT,
+           "tb_make_rounded_box: radius");
+  REJECT(tb_make_box(1.0f, 1.0f, NULL), TB_ERR_NULL_ARGUMENT, "tb_make_box: out");
+  REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){0, 0}, 0.0f, NULL), TB_ERR_NULL_ARGUMENT, "tb_make_offset_box: out");
+  REJECT(tb_make_rounded_box(1.0f, 1.0f, 0.1f, NULL), TB_ERR_NULL_ARGUMENT, "tb_make_rounded_box: out");
   /* a box too thin for a float at its centre collapses: it must be refused, not
    * handed out as a polygon that no shape accepts */
-  REJECT(tb_make_offset_box(0.001f, 0.001f, (tb_vec2){9e6f, 9e6f}, 0.3f, &out), TB_ERR_DEGENERATE_POLYGON, "box");
+  REJECT(tb_make_offset_box(0.001f, 0.001f, (tb_vec2){9e6f, 9e6f}, 0.3f, &out), TB_ERR_DEGENERATE_POLYGON,
+         "tb_make_offset_box: a box");
   ck_assert_int_eq(tb_make_offset_box(0.5f, 0.001f, (tb_vec2){1, 2}, 0.3f, &out), TB_OK); /* a 2 mm card is fine */
 }
 END_TEST
