@@ -29,12 +29,22 @@ static void setup(void) {
 
 static void teardown(void) { tb_destroy_world(W); }
 
-/* Evaluate a call that must be rejected with `code`, name `word` in its
- * message, and leave the world as it was. */
+/* What a call returned when it returns a tb_result, else `code`: _Generic
+ * evaluates only the branch it picks, so the call runs once either way. */
+#define RETURNED(call, code) _Generic((call), tb_result : (call), default : ((void)(call), (code)))
+_Static_assert(_Generic(tb_destroy_world((tb_world_id){0, 0}), tb_result : 1, default : 0) &&
+                   !_Generic(tb_world_get_counts((tb_world_id){0, 0}), tb_result : 1, default : 0),
+               "RETURNED tells tb_result calls from the others");
+
+/* Evaluate a call that must be rejected with `code` (recorded, and returned
+ * when the call returns a tb_result), name `word` in its message, and leave
+ * the world as it was. */
 #define REJECT(call, code, word)                                                                                   \
   do {                                                                                                             \
     tb_clear_error();                                                                                              \
-    (void)(call);                                                                                                  \
+    tb_result returned_ = RETURNED(call, code);                                                                    \
+    ck_assert_msg(returned_ == (code), "%s: returned %s, want %s (%s)", #call, tb_result_name(returned_),          \
+                  tb_result_name(code), tb_last_error());                                                          \
     ck_assert_msg(tb_last_result() == (code), "%s: got %s, want %s (%s)", #call, tb_result_name(tb_last_result()), \
                   tb_result_name(code), tb_last_error());                                                          \
     ck_assert_msg(strstr(tb_last_error(), (word)) != NULL, "%s: message '%s' lacks '%s'", #call, tb_last_error(),  \
