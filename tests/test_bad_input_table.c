@@ -781,6 +781,27 @@ START_TEST(joint_creation) {
   md.body_a = FOREIGN_BODY;
   md.body_b = A;
   REJECT(tb_create_mouse_joint(W, &md), TB_ERR_FOREIGN_HANDLE, "body_a");
+  /* and every other joint type, each side */
+  for (int side = 0; side < 2; ++side) {
+    tb_body_id ba = side == 0 ? A : FOREIGN_BODY, bb = side == 0 ? FOREIGN_BODY : A;
+    const char* which = side == 0 ? "body_b" : "body_a";
+    tb_prismatic_joint_def pd = tb_default_prismatic_joint_def();
+    pd.body_a = ba;
+    pd.body_b = bb;
+    REJECT(tb_create_prismatic_joint(W, &pd), TB_ERR_FOREIGN_HANDLE, which);
+    tb_weld_joint_def wd = tb_default_weld_joint_def();
+    wd.body_a = ba;
+    wd.body_b = bb;
+    REJECT(tb_create_weld_joint(W, &wd), TB_ERR_FOREIGN_HANDLE, which);
+    tb_wheel_joint_def hd = tb_default_wheel_joint_def();
+    hd.body_a = ba;
+    hd.body_b = bb;
+    REJECT(tb_create_wheel_joint(W, &hd), TB_ERR_FOREIGN_HANDLE, which);
+    tb_motor_joint_def od = tb_default_motor_joint_def();
+    od.body_a = ba;
+    od.body_b = bb;
+    REJECT(tb_create_motor_joint(W, &od), TB_ERR_FOREIGN_HANDLE, which);
+  }
   /* the foreign world is untouched too */
   uint64_t other = tb_world_hash(OTHER);
   REJECT(tb_create_distance_joint(OTHER, &dd), TB_ERR_FOREIGN_HANDLE, "body_b");
