@@ -54,6 +54,9 @@ _Static_assert(_Generic(tb_destroy_world((tb_world_id){0, 0}), tb_result : 1, de
 
 static const float bad_reals[] = {NAN, INFINITY, -INFINITY, 1e30f, -1e30f};
 #define N_BAD (int)(sizeof bad_reals / sizeof bad_reals[0])
+/* ... and what no quantity that must be >= 0 accepts */
+static const float bad_non_negatives[] = {NAN, INFINITY, -INFINITY, 1e30f, -1e30f, -1.0f, -1e-30f};
+#define N_BAD_NN (int)(sizeof bad_non_negatives / sizeof bad_non_negatives[0])
 
 START_TEST(world_calls) {
   REJECT(tb_create_world(NULL), TB_ERR_NULL_ARGUMENT, "def");
@@ -247,6 +250,17 @@ START_TEST(shape_creation) {
   tb_circle c = {{0, 0}, 0.5f};
   REJECT(tb_create_circle_shape(DYN, NULL, &c), TB_ERR_NULL_ARGUMENT, "def");
   REJECT(tb_create_circle_shape(DYN, &sd, NULL), TB_ERR_NULL_ARGUMENT, "geometry");
+  /* the other shape types, NULL def and NULL geometry */
+  tb_capsule cap0 = {{0, 0}, {1, 0}, 0.2f};
+  tb_segment seg0 = {{0, 0}, {1, 0}};
+  tb_polygon box0;
+  ck_assert_int_eq(tb_make_box(0.5f, 0.5f, &box0), TB_OK);
+  REJECT(tb_create_capsule_shape(DYN, NULL, &cap0), TB_ERR_NULL_ARGUMENT, "tb_create_capsule_shape: def");
+  REJECT(tb_create_capsule_shape(DYN, &sd, NULL), TB_ERR_NULL_ARGUMENT, "tb_create_capsule_shape: the geometry");
+  REJECT(tb_create_segment_shape(DYN, NULL, &seg0), TB_ERR_NULL_ARGUMENT, "tb_create_segment_shape: def");
+  REJECT(tb_create_segment_shape(DYN, &sd, NULL), TB_ERR_NULL_ARGUMENT, "tb_create_segment_shape: the geometry");
+  REJECT(tb_create_polygon_shape(DYN, NULL, &box0), TB_ERR_NULL_ARGUMENT, "tb_create_polygon_shape: def");
+  REJECT(tb_create_polygon_shape(DYN, &sd, NULL), TB_ERR_NULL_ARGUMENT, "tb_create_polygon_shape: the geometry");
   for (int i = 0; i < N_BAD; ++i) {
     float x = bad_reals[i];
     sd = tb_default_shape_def();
@@ -320,15 +334,30 @@ START_TEST(hand_made_polygons) {
 END_TEST
 
 START_TEST(shape_calls) {
-  REJECT(tb_shape_set_density(BOX, -2.0f), TB_ERR_INVALID_ARGUMENT, "density");
-  REJECT(tb_shape_set_density(BOX, NAN), TB_ERR_INVALID_ARGUMENT, "density");
-  REJECT(tb_shape_set_friction(BOX, -0.1f), TB_ERR_INVALID_ARGUMENT, "friction");
-  REJECT(tb_shape_set_restitution(BOX, INFINITY), TB_ERR_INVALID_ARGUMENT, "restitution");
+  for (int i = 0; i < N_BAD_NN; ++i) {
+    float x = bad_non_negatives[i];
+    REJECT(tb_shape_set_density(BOX, x), TB_ERR_INVALID_ARGUMENT, "tb_shape_set_density: density");
+    REJECT(tb_shape_set_friction(BOX, x), TB_ERR_INVALID_ARGUMENT, "tb_shape_set_friction: friction");
+    REJECT(tb_shape_set_restitution(BOX, x), TB_ERR_INVALID_ARGUMENT, "tb_shape_set_restitution: restitution");
+    REJECT(tb_shape_set_rolling_resistance(BOX, x), TB_ERR_INVALID_ARGUMENT,
+           "tb_shape_set_rolling_resistance: rolling_resistance");
+  }
+  for (int i = 0; i < N_BAD; ++i)
+    REJECT(tb_shape_set_tangent_speed(BOX, bad_reals[i]), TB_ERR_INVALID_ARGUMENT, "tb_shape_set_tangent_speed: speed");
   tb_circle c;
   REJECT(tb_shape_get_circle(BOX, &c), TB_ERR_INVALID_ARGUMENT, "type");
   tb_polygon p;
-  REJECT(tb_shape_get_polygon(BOX, NULL), TB_ERR_NULL_ARGUMENT, "out");
-  (void)p;
+  /* every geometry getter with a NULL out, on a shape of its own type */
+  tb_shape_def sd = tb_default_shape_def();
+  tb_shape_id circle = tb_create_circle_shape(DYN, &sd, &(tb_circle){{0, 0}, 0.25f});
+  tb_shape_id capsule = tb_create_capsule_shape(DYN, &sd, &(tb_capsule){{0, 0}, {0.5f, 0}, 0.25f});
+  tb_shape_id segment = tb_create_segment_shape(DYN, &sd, &(tb_segment){{0, 0}, {0.5f, 0}});
+  ck_assert(tb_shape_is_valid(circle) && tb_shape_is_valid(capsule) && tb_shape_is_valid(segment));
+  HASH = tb_world_hash(W);
+  REJECT(tb_shape_get_circle(circle, NULL), TB_ERR_NULL_ARGUMENT, "tb_shape_get_circle: out");
+  REJECT(tb_shape_get_capsule(capsule, NULL), TB_ERR_NULL_ARGUMENT, "tb_shape_get_capsule: out");
+  REJECT(tb_shape_get_segment(segment, NULL), TB_ERR_NULL_ARGUMENT, "tb_shape_get_segment: out");
+  REJECT(tb_shape_get_polygon(BOX, NULL), TB_ERR_NULL_ARGUMENT, "tb_shape_get_polygon: out");
   const tb_shape_id handles[2] = {DEAD_SHAPE, {0, 0, 0}};
   for (int i = 0; i < 2; ++i) {
     tb_shape_id s = handles[i];
