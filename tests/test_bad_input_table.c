@@ -1099,7 +1099,7 @@ END_TEST
 typedef struct reentry {
   int calls;
   tb_result destroy_body, destroy_shape, create_body, destroy_joint, step, set_velocity, destroy_world;
-  tb_result create_shape;
+  tb_result create_shape, destroy_chain, create_joint;
 } reentry;
 
 static void try_everything(reentry* r) {
@@ -1112,6 +1112,11 @@ static void try_everything(reentry* r) {
   tb_shape_def sd = tb_default_shape_def();
   r->create_shape = tb_shape_id_is_null(tb_create_circle_shape(C, &sd, &c)) ? tb_last_result() : TB_OK;
   r->destroy_joint = tb_destroy_joint(JD);
+  r->destroy_chain = tb_destroy_chain(CHAIN);
+  tb_distance_joint_def dd = tb_default_distance_joint_def();
+  dd.body_a = A;
+  dd.body_b = C;
+  r->create_joint = tb_joint_id_is_null(tb_create_distance_joint(W, &dd)) ? tb_last_result() : TB_OK;
   r->step = tb_world_step(W, 1.0f / 60.0f, 1);
   r->set_velocity = tb_body_set_linear_velocity(A, (tb_vec2){1, 1});
   r->destroy_world = tb_destroy_world(W);
@@ -1125,10 +1130,13 @@ static void assert_all_locked_at(const reentry* r, int line) {
   ck_assert_int_eq(r->create_body, TB_ERR_LOCKED);
   ck_assert_int_eq(r->create_shape, TB_ERR_LOCKED);
   ck_assert_int_eq(r->destroy_joint, TB_ERR_LOCKED);
+  ck_assert_int_eq(r->destroy_chain, TB_ERR_LOCKED);
+  ck_assert_int_eq(r->create_joint, TB_ERR_LOCKED);
   ck_assert_int_eq(r->step, TB_ERR_LOCKED);
   ck_assert_int_eq(r->set_velocity, TB_ERR_LOCKED);
   ck_assert_int_eq(r->destroy_world, TB_ERR_LOCKED);
-  ck_assert(tb_world_is_valid(W) && tb_body_is_valid(B) && tb_shape_is_valid(BOX) && tb_joint_is_valid(JD));
+  ck_assert(tb_world_is_valid(W) && tb_body_is_valid(B) && tb_shape_is_valid(BOX) && tb_joint_is_valid(JD) &&
+            tb_chain_is_valid(CHAIN));
 }
 
 static bool overlap_reenter(tb_shape_id shape, void* context) {
@@ -1143,8 +1151,9 @@ static float cast_reenter(tb_shape_id shape, tb_vec2 point, tb_vec2 normal, floa
   return fraction;
 }
 
-/* A query callback may read the world, but every change is refused: the trees
- * are being walked. The query still reports the same shapes. */
+/* A query callback may read the world, but every change is refused (bodies,
+ * shapes, chains, joints, stepping, the world itself): the trees are being
+ * walked. The query still reports the same shapes. */
 START_TEST(changes_inside_query_callbacks) {
   tb_query_filter f = tb_default_query_filter();
   reentry r = {0};
@@ -1200,9 +1209,17 @@ START_TEST(changes_inside_step_callbacks) {
   wd.custom_filter = filter_reenter;
   wd.force_field = field_reenter;
   tb_world_id keep = W;
+  tb_chain_id keep_chain = CHAIN;
   W = tb_create_world(&wd);
   tb_body_def bd = tb_default_body_def();
   tb_body_id ground = tb_create_body(W, &bd);
+  /* a chain of this world, far below the boxes, for the callbacks to try to destroy */
+  const tb_vec2 deep[2] = {{-5, -20}, {5, -20}};
+  tb_chain_def cd = tb_default_chain_def();
+  cd.points = deep;
+  cd.count = 2;
+  CHAIN = tb_create_chain(ground, &cd);
+  ck_assert(tb_chain_is_valid(CHAIN));
   tb_polygon floor;
   tb_make_box(10, 0.5f, &floor);
   tb_shape_def sd = tb_default_shape_def();
@@ -1220,9 +1237,14 @@ START_TEST(changes_inside_step_callbacks) {
   step_reentry = (reentry){0};
   ck_assert_int_eq(tb_world_step(W, 1.0f / 60.0f, 4), TB_OK);
   assert_all_locked(&step_reentry);
-  ck_assert_int_eq(tb_world_get_counts(W).body_count, 4);
+  tb_counts counts = tb_world_get_counts(W);
+  ck_assert_int_eq(counts.body_count, 4);
+  ck_assert_int_eq(counts.joint_count, 1);
+  ck_assert_int_eq(counts.shape_count, 5); /* the floor, three boxes, one chain segment */
+  ck_assert_int_eq(tb_chain_get_segment_count(CHAIN), 1);
   tb_destroy_world(W);
   W = keep;
+  CHAIN = keep_chain;
 }
 END_TEST
 
