@@ -303,10 +303,20 @@ typedef struct tb_profile {
 
 tb_profile tb_world_get_profile(tb_world_id world);
 
-/* A 64-bit hash of the simulated state and settings: every body's placement,
- * velocities, forces, mass and flags, every shape's geometry and material, and
- * the world's gravity, integrator and time. Equal states give equal hashes;
- * use it to check determinism or that a rejected call changed nothing. */
+/* A 64-bit hash of the whole world: everything a public call can change and
+ * everything a step carries over to the next. That is the world's settings
+ * (gravity, integrator, solver tuning, switches, time and step count); every
+ * body's placement, velocities, forces, mass, damping, flags (bullet, sleep,
+ * enabled, fixed rotation) and sleep state (awake order, sleeping islands,
+ * rest timer, threshold); every shape's geometry, material, filter and event
+ * flags; chains; every joint's definition, limits, motor, spring, target and
+ * accumulated impulses; the contacts with their warm-start impulses; the
+ * broad phase's trees and queued proxies; the events of the last step.
+ * Pointers the caller passes (user data, callbacks and their contexts) count
+ * only as set or not set, so the hash is the same on every run and in any
+ * world slot. Not covered: the profile (wall-clock times) and which free slot
+ * the next object takes. Equal states give equal hashes; use it to check
+ * determinism or that a rejected call changed nothing. */
 uint64_t tb_world_hash(tb_world_id world);
 
 /* The message of the last call rejected on this world ("" when none). */

@@ -510,32 +510,85 @@ tb_sensor_events tb_world_get_sensor_events(tb_world_id id) {
   return e;
 }
 
-/* FNV-1a over explicitly listed fields (struct padding is never hashed). */
+/* The hash takes explicitly listed fields (struct padding is never hashed),
+ * a 32-bit word at a time: xor, multiply by an odd constant, fold the high
+ * half down. Each of these is a bijection of the state, so two worlds that
+ * differ in one field always hash apart. Pointers the user handed in (user
+ * data, callbacks, contexts) count only as set or not: their values change
+ * from run to run. */
 typedef struct hasher {
   uint64_t h;
 } hasher;
 
-static void hash_bytes(hasher* s, const void* data, size_t n) {
-  const unsigned char* p = data;
-  for (size_t i = 0; i < n; ++i) s->h = (s->h ^ p[i]) * 0x100000001b3ull;
+static void hash_word(hasher* s, uint32_t x) {
+  uint64_t h = (s->h ^ x) * 0x9e3779b97f4a7c15ull;
+  s->h = h ^ (h >> 32);
 }
-static void hash_float(hasher* s, float x) { hash_bytes(s, &x, sizeof x); }
-static void hash_int(hasher* s, int x) { hash_bytes(s, &x, sizeof x); }
+static void hash_float(hasher* s, float x) {
+  uint32_t bits;
+  memcpy(&bits, &x, sizeof bits);
+  hash_word(s, bits);
+}
+static void hash_int(hasher* s, int x) { hash_word(s, (uint32_t)x); }
+static void hash_u64(hasher* s, uint64_t x) {
+  hash_word(s, (uint32_t)x);
+  hash_word(s, (uint32_t)(x >> 32));
+}
+static void hash_double(hasher* s, double x) {
+  uint64_t bits;
+  memcpy(&bits, &x, sizeof bits);
+  hash_u64(s, bits);
+}
+static void hash_set(hasher* s, const void* p) { hash_int(s, p != NULL); }
 static void hash_vec(hasher* s, tb_vec2 v) {
   hash_float(s, v.x);
   hash_float(s, v.y);
+}
+static void hash_aabb(hasher* s, tb_aabb a) {
+  hash_vec(s, a.lower);
+  hash_vec(s, a.upper);
+}
+static void hash_floats(hasher* s, const float* f, size_t n) {
+  for (size_t k = 0; k < n; ++k) hash_float(s, f[k]);
+}
+
+static void hash_settings(hasher* s, const tb_world* w) {
+  hash_vec(s, w->gravity);
+  hash_int(s, (int)w->integrator);
+  hash_double(s, w->time);
+  hash_int(s, w->step_count);
+  const float f[] = {w->hit_event_threshold,       w->contact_hertz,       w->contact_damping_ratio,
+                     w->contact_push_max_velocity, w->joint_hertz,         w->joint_damping_ratio,
+                     w->restitution_threshold,     w->maximum_linear_speed};
+  hash_floats(s, f, sizeof f / sizeof f[0]);
+  hash_int(s, w->relax_iterations);
+  hash_int(s, w->enable_sleep + 2 * w->enable_continuous + 4 * w->enable_warm_starting);
+  hash_int(s, w->force_field != NULL);
+  hash_set(s, w->force_field_context);
+  hash_int(s, w->custom_filter != NULL);
+  hash_set(s, w->custom_filter_context);
+  hash_int(s, w->pre_solve != NULL);
+  hash_set(s, w->pre_solve_context);
+  hash_int(s, w->friction_mix != NULL);
+  hash_int(s, w->restitution_mix != NULL);
+  hash_set(s, w->mix_context);
+  hash_set(s, w->user_data);
 }
 
 static void hash_shape(hasher* s, const tb_shape* sh) {
   hash_int(s, (int)sh->type);
   hash_int(s, sh->body);
-  hash_float(s, sh->density);
-  hash_float(s, sh->friction);
-  hash_float(s, sh->restitution);
-  hash_bytes(s, &sh->filter.category_bits, sizeof sh->filter.category_bits);
-  hash_bytes(s, &sh->filter.mask_bits, sizeof sh->filter.mask_bits);
+  const float f[] = {sh->density, sh->friction, sh->restitution, sh->rolling_resistance, sh->tangent_speed};
+  hash_floats(s, f, sizeof f / sizeof f[0]);
+  hash_u64(s, sh->filter.category_bits);
+  hash_u64(s, sh->filter.mask_bits);
   hash_int(s, sh->filter.group_index);
-  hash_int(s, sh->sensor);
+  hash_int(s, sh->sensor + 2 * sh->enable_sensor_events + 4 * sh->enable_contact_events + 8 * sh->enable_hit_events +
+                  16 * sh->enable_pre_solve_events + 32 * sh->in_move_buffer + 64 * (sh->proxy >= 0));
+  hash_int(s, sh->tree);
+  hash_int(s, sh->chain);
+  hash_set(s, sh->user_data);
+  hash_aabb(s, sh->aabb);
   switch (sh->type) {
     case TB_SHAPE_CIRCLE:
       hash_vec(s, sh->geom.circle.center);
@@ -556,11 +609,174 @@ static void hash_shape(hasher* s, const tb_shape* sh) {
       hash_vec(s, sh->geom.chain_segment.segment.point2);
       hash_vec(s, sh->geom.chain_segment.ghost2);
       break;
-    case TB_SHAPE_POLYGON:
-      hash_int(s, sh->geom.polygon.count);
-      for (int i = 0; i < sh->geom.polygon.count; ++i) hash_vec(s, sh->geom.polygon.vertices[i]);
-      hash_float(s, sh->geom.polygon.radius);
+    case TB_SHAPE_POLYGON: {
+      const tb_polygon* p = &sh->geom.polygon;
+      hash_int(s, p->count);
+      for (int i = 0; i < p->count && i < TB_MAX_POLYGON_VERTICES; ++i) {
+        hash_vec(s, p->vertices[i]);
+        hash_vec(s, p->normals[i]);
+      }
+      hash_vec(s, p->centroid);
+      hash_float(s, p->radius);
       break;
+    }
+  }
+}
+
+/* A body with its shapes, its place in the awake set or a sleeping island,
+ * and the order of its contact and joint lists (the solver's order). */
+static void hash_body(hasher* s, const tb_world* w, int i) {
+  const tb_body* b = tb_body_at(w, i);
+  hash_int(s, i);
+  hash_int(s, (int)b->type);
+  hash_vec(s, b->center);
+  hash_vec(s, b->center_residual);
+  hash_vec(s, b->transform.p);
+  hash_vec(s, (tb_vec2){b->transform.q.c, b->transform.q.s});
+  hash_vec(s, b->local_center);
+  hash_vec(s, b->linear_velocity);
+  hash_vec(s, b->force);
+  const float f[] = {b->angle,           b->angular_velocity, b->torque,      b->mass,
+                     b->inv_mass,        b->inertia,          b->inv_inertia, b->linear_damping,
+                     b->angular_damping, b->gravity_scale,    b->sleep_time,  b->sleep_threshold,
+                     b->max_extent,      b->min_extent};
+  hash_floats(s, f, sizeof f / sizeof f[0]);
+  hash_int(s, b->fixed_rotation + 2 * b->enabled + 4 * b->mass_overridden + 8 * b->is_bullet + 16 * b->enable_sleep);
+  hash_int(s, b->awake_index);
+  hash_int(s, b->sleep_island);
+  hash_int(s, b->island_next);
+  hash_set(s, b->user_data);
+  hash_int(s, b->shape_count);
+  for (int k = b->shape_list; k >= 0; k = tb_shape_at(w, k)->next) {
+    hash_int(s, k);
+    hash_shape(s, tb_shape_at(w, k));
+  }
+  hash_int(s, b->contact_count);
+  for (int key = b->contact_list; key >= 0;) {
+    hash_int(s, key);
+    key = ((const tb_contact*)tb_pool_at(&w->contacts, key >> 1))->edges[key & 1].next;
+  }
+  hash_int(s, b->joint_count);
+  for (int key = b->joint_list; key >= 0; key = tb_joint_at(w, key >> 1)->edges[key & 1].next) hash_int(s, key);
+}
+
+/* A contact: its shapes, mixed material, flags and the manifold with the
+ * impulses kept for warm starting. */
+static void hash_contact(hasher* s, int i, const tb_contact* c) {
+  hash_int(s, i);
+  hash_int(s, c->shape_a);
+  hash_int(s, c->shape_b);
+  hash_int(s, (int)c->flags);
+  const float f[] = {c->friction, c->restitution, c->rolling_resistance, c->tangent_speed, c->rolling_impulse};
+  hash_floats(s, f, sizeof f / sizeof f[0]);
+  const tb_manifold* m = &c->manifold;
+  hash_vec(s, m->normal);
+  hash_int(s, m->point_count);
+  for (int k = 0; k < m->point_count && k < 2; ++k) {
+    const tb_manifold_point* p = &m->points[k];
+    hash_vec(s, p->point);
+    hash_word(s, p->id);
+    hash_floats(s, (const float[]){p->separation, p->normal_impulse, p->tangent_impulse}, 3);
+  }
+}
+
+static void hash_joint(hasher* s, int i, const tb_joint* j) {
+  hash_int(s, i);
+  hash_int(
+      s, (int)j->type + 8 * j->collide_connected + 16 * j->enable_spring + 32 * j->enable_limit + 64 * j->enable_motor);
+  hash_int(s, j->edges[0].body);
+  hash_int(s, j->edges[1].body);
+  hash_set(s, j->user_data);
+  hash_vec(s, j->local_anchor_a);
+  hash_vec(s, j->local_anchor_b);
+  hash_vec(s, j->local_axis_a);
+  hash_vec(s, j->target);
+  hash_vec(s, j->linear_impulse);
+  hash_vec(s, j->force);
+  const float f[] = {j->reference_angle,
+                     j->length,
+                     j->lower,
+                     j->upper,
+                     j->hertz,
+                     j->damping_ratio,
+                     j->angular_hertz,
+                     j->angular_damping_ratio,
+                     j->motor_speed,
+                     j->max_motor,
+                     j->max_force,
+                     j->max_torque,
+                     j->correction_factor,
+                     j->angular_impulse,
+                     j->axial_impulse,
+                     j->spring_impulse,
+                     j->motor_impulse,
+                     j->lower_impulse,
+                     j->upper_impulse,
+                     j->last_h,
+                     j->torque,
+                     j->motor_output};
+  hash_floats(s, f, sizeof f / sizeof f[0]);
+}
+
+/* A broad-phase tree by its shape, not its node numbers: the leaves (shape,
+ * fat box, category bits) in depth-first order, each node marked leaf or
+ * internal, which fixes the shape of a tree whose internal nodes all have two
+ * children. Walked through the parent links: no stack, no allocation. */
+static void hash_tree(hasher* s, const tb_tree* t) {
+  hash_int(s, t->proxy_count);
+  int prev = TB_TREE_NULL;
+  for (int n = t->root; n != TB_TREE_NULL;) {
+    const tb_tree_node* node = &t->nodes[n];
+    int next;
+    if (prev == node->parent) { /* arrived from above: visit */
+      bool leaf = node->child1 == TB_TREE_NULL;
+      hash_int(s, leaf);
+      if (leaf) {
+        hash_int(s, node->user_id);
+        hash_aabb(s, node->aabb);
+        hash_u64(s, node->category_bits);
+      }
+      next = leaf ? node->parent : node->child1;
+    } else {
+      next = prev == node->child1 ? node->child2 : node->parent;
+    }
+    prev = n;
+    n = next;
+  }
+}
+
+static void hash_shape_id(hasher* s, tb_shape_id id) {
+  hash_int(s, id.index1);
+  hash_int(s, id.generation);
+}
+
+/* Events of the last step (and the end events of shapes destroyed since). */
+static void hash_events(hasher* s, const tb_world* w) {
+  hash_int(s, w->begin_count);
+  for (int i = 0; i < w->begin_count; ++i) {
+    hash_shape_id(s, w->begin_events[i].shape_a);
+    hash_shape_id(s, w->begin_events[i].shape_b);
+  }
+  hash_int(s, w->end_count);
+  for (int i = 0; i < w->end_count; ++i) {
+    hash_shape_id(s, w->end_events[i].shape_a);
+    hash_shape_id(s, w->end_events[i].shape_b);
+  }
+  hash_int(s, w->hit_count);
+  for (int i = 0; i < w->hit_count; ++i) {
+    hash_shape_id(s, w->hit_events[i].shape_a);
+    hash_shape_id(s, w->hit_events[i].shape_b);
+    hash_float(s, w->hit_events[i].approach_speed);
+  }
+  hash_int(s, w->sensor_begin_count);
+  for (int i = 0; i < w->sensor_begin_count; ++i) {
+    hash_shape_id(s, w->sensor_begin_events[i].sensor);
+    hash_shape_id(s, w->sensor_begin_events[i].visitor);
+  }
+  hash_int(s, w->sensor_end_count);
+  for (int i = 0; i < w->sensor_end_count; ++i) {
+    hash_shape_id(s, w->sensor_end_events[i].sensor);
+    hash_shape_id(s, w->sensor_end_events[i].visitor);
   }
 }
 
@@ -568,69 +784,37 @@ uint64_t tb_world_hash(tb_world_id id) {
   tb_world* w = tb_world_get(id, "tb_world_hash");
   if (w == NULL) return 0;
   hasher s = {0xcbf29ce484222325ull};
-  hash_vec(&s, w->gravity);
-  hash_int(&s, (int)w->integrator);
-  hash_bytes(&s, &w->time, sizeof w->time);
+  hash_settings(&s, w);
   hash_int(&s, w->bodies.count);
   hash_int(&s, w->shapes.count);
-  for (int i = 0; i < w->bodies.high; ++i) {
-    if (!tb_pool_alive(&w->bodies, i)) continue;
-    const tb_body* b = tb_body_at(w, i);
-    hash_int(&s, i);
-    hash_int(&s, (int)b->type);
-    hash_vec(&s, b->center);
-    hash_vec(&s, b->center_residual);
-    hash_float(&s, b->angle);
-    hash_vec(&s, b->transform.p);
-    hash_vec(&s, b->local_center);
-    hash_vec(&s, b->linear_velocity);
-    hash_float(&s, b->angular_velocity);
-    hash_vec(&s, b->force);
-    hash_float(&s, b->torque);
-    hash_float(&s, b->mass);
-    hash_float(&s, b->inertia);
-    hash_float(&s, b->linear_damping);
-    hash_float(&s, b->angular_damping);
-    hash_float(&s, b->gravity_scale);
-    hash_int(&s, b->fixed_rotation + 2 * b->enabled + 4 * b->mass_overridden);
-    for (int k = b->shape_list; k >= 0; k = tb_shape_at(w, k)->next) hash_shape(&s, tb_shape_at(w, k));
-  }
+  for (int i = 0; i < w->bodies.high; ++i)
+    if (tb_pool_alive(&w->bodies, i)) hash_body(&s, w, i);
+  /* the awake set in its order: the order of the solver bodies */
+  hash_int(&s, w->awake_count);
+  for (int i = 0; i < w->awake_count; ++i) hash_int(&s, w->awake[i]);
+  hash_int(&s, w->islands.count);
+  hash_int(&s, w->contacts.count);
+  for (int i = 0; i < w->contacts.high; ++i)
+    if (tb_pool_alive(&w->contacts, i)) hash_contact(&s, i, (const tb_contact*)tb_pool_at(&w->contacts, i));
   hash_int(&s, w->joints.count);
-  for (int i = 0; i < w->joints.high; ++i) {
-    if (!tb_pool_alive(&w->joints, i)) continue;
-    const tb_joint* j = tb_joint_at(w, i);
+  for (int i = 0; i < w->joints.high; ++i)
+    if (tb_pool_alive(&w->joints, i)) hash_joint(&s, i, tb_joint_at(w, i));
+  hash_int(&s, w->chains.count);
+  for (int i = 0; i < w->chains.high; ++i) {
+    if (!tb_pool_alive(&w->chains, i)) continue;
+    const tb_chain* c = (const tb_chain*)tb_pool_at(&w->chains, i);
     hash_int(&s, i);
-    hash_int(&s, (int)j->type + 8 * j->collide_connected + 16 * j->enable_spring + 32 * j->enable_limit +
-                     64 * j->enable_motor);
-    hash_int(&s, j->edges[0].body);
-    hash_int(&s, j->edges[1].body);
-    hash_vec(&s, j->local_anchor_a);
-    hash_vec(&s, j->local_anchor_b);
-    hash_vec(&s, j->local_axis_a);
-    hash_vec(&s, j->target);
-    const float f[] = {j->reference_angle,
-                       j->length,
-                       j->lower,
-                       j->upper,
-                       j->hertz,
-                       j->damping_ratio,
-                       j->angular_hertz,
-                       j->angular_damping_ratio,
-                       j->motor_speed,
-                       j->max_motor,
-                       j->max_force,
-                       j->max_torque,
-                       j->correction_factor,
-                       j->linear_impulse.x,
-                       j->linear_impulse.y,
-                       j->angular_impulse,
-                       j->axial_impulse,
-                       j->spring_impulse,
-                       j->motor_impulse,
-                       j->lower_impulse,
-                       j->upper_impulse};
-    for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) hash_float(&s, f[k]);
+    hash_int(&s, c->body);
+    hash_int(&s, c->loop);
+    hash_int(&s, c->count);
+    for (int k = 0; k < c->count; ++k) hash_int(&s, c->shapes[k]);
   }
+  /* the broad phase: the trees and the proxies queued for pair finding (the
+   * pair set mirrors the contacts) */
+  for (int t = 0; t < 3; ++t) hash_tree(&s, &w->broad_phase.trees[t]);
+  for (int i = 0; i < w->broad_phase.move_count; ++i)
+    if (w->broad_phase.move_buffer[i] >= 0) hash_int(&s, w->broad_phase.move_buffer[i]);
+  hash_events(&s, w);
   return s.h;
 }
 
