@@ -137,8 +137,8 @@ tb_world_id stress_new_drum(void);
 uint64_t stress_churn_hash(int steps);
 
 /* Hashes of the stress scenes after a fixed number of steps, one line per
- * scene ("name hash"), written to `out`; run twice in-process, and false when
- * the two runs differ. */
-bool stress_print_hashes(FILE* out);
+ * scene ("name hash"), written to `out`. With runs = 2 each scene is run
+ * twice in-process, and false is returned when the two runs differ. */
+bool stress_print_hashes(FILE* out, int runs);
 
 #endif
