@@ -14,6 +14,8 @@
 #define ROOM_HALF 10.0f
 #define WALL_HALF_T 0.005f
 #define BULLET_SPEED 500.0f
+#define BULLET_COUNT 1000
+#define BULLET_SEED 20240607u
 
 static float uniform(unsigned* state, float lo, float hi) {
   unsigned x = *state;
@@ -24,7 +26,9 @@ static float uniform(unsigned* state, float lo, float hi) {
   return lo + (hi - lo) * (float)((double)x / 4294967296.0);
 }
 
-void stress_build_bullets(tb_world_id w, int count, unsigned seed) {
+tb_world_id stress_new_bullets(void) {
+  tb_world_id w = stress_world(true);
+  unsigned seed = BULLET_SEED;
   tb_body_def rd = tb_default_body_def();
   tb_body_id room = tb_create_body(w, &rd);
   tb_shape_def wd = tb_default_shape_def();
@@ -43,7 +47,7 @@ void stress_build_bullets(tb_world_id w, int count, unsigned seed) {
   bsd.density = 10.0f;
   bsd.filter.group_index = -1;
   tb_circle c = {{0.0f, 0.0f}, 0.025f};
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < BULLET_COUNT; ++i) {
     tb_body_def bd = tb_default_body_def();
     bd.type = TB_DYNAMIC_BODY;
     bd.is_bullet = true;
@@ -53,14 +57,14 @@ void stress_build_bullets(tb_world_id w, int count, unsigned seed) {
     tb_body_id b = tb_create_body(w, &bd);
     tb_create_circle_shape(b, &bsd, &c);
   }
+  return w;
 }
 
 /* 2 s (120 steps): every bullet hits a wall in its first or second step and
  * then rattles along the walls into the corners. A bullet whose centre is ever
  * past a wall's centre line has tunnelled: zero allowed. */
 void stress_bullets(stress_result* out) {
-  tb_world_id w = stress_world(true);
-  stress_build_bullets(w, 1000, 20240607u);
+  tb_world_id w = stress_new_bullets();
   int n = 0;
   tb_body_id* b = stress_bodies(w, &n); /* the room first */
   bool* escaped = calloc((size_t)n, sizeof *escaped);
@@ -76,7 +80,7 @@ void stress_bullets(stress_result* out) {
       }
     }
   }
-  out->pass = finite && n == 1001 && tunnelled == 0;
+  out->pass = finite && n == BULLET_COUNT + 1 && tunnelled == 0;
   stress_note(out, "%d of %d shots tunnelled%s", tunnelled, n - 1, finite ? "" : ", NOT FINITE");
   free(escaped);
   free(b);
@@ -91,13 +95,21 @@ void stress_bullets(stress_result* out) {
  * - Dropped from 2 m onto the ground while spinning: contacts and friction can
  *   only take energy out, so its total energy may never exceed the start's by
  *   more than 1 % (the symplectic step's energy error on a bounce), 10 s. */
-void stress_spinner(stress_result* out) {
+tb_world_id stress_new_spinner(tb_body_id* free_plank, tb_body_id* dropped) {
   tb_world_id w = stress_world(false);
-  tb_body_id free_plank = stress_box(w, (tb_vec2){100.0f, 1000.0f}, 0.0f, 1.0f, 0.1f, NULL);
-  tb_body_set_angular_velocity(free_plank, 50.0f);
+  tb_body_id f = stress_box(w, (tb_vec2){100.0f, 1000.0f}, 0.0f, 1.0f, 0.1f, NULL);
+  tb_body_set_angular_velocity(f, 50.0f);
   stress_ground(w, 0.0f, 0.0f, 200.0f);
-  tb_body_id dropped = stress_box(w, (tb_vec2){0.0f, 2.0f}, 0.0f, 1.0f, 0.1f, NULL);
-  tb_body_set_angular_velocity(dropped, 50.0f);
+  tb_body_id d = stress_box(w, (tb_vec2){0.0f, 2.0f}, 0.0f, 1.0f, 0.1f, NULL);
+  tb_body_set_angular_velocity(d, 50.0f);
+  if (free_plank != NULL) *free_plank = f;
+  if (dropped != NULL) *dropped = d;
+  return w;
+}
+
+void stress_spinner(stress_result* out) {
+  tb_body_id free_plank, dropped;
+  tb_world_id w = stress_new_spinner(&free_plank, &dropped);
   double e0 = stress_energy(&dropped, 1), e_max = e0;
   bool finite = true;
   for (int i = 0; i < 600 && finite; ++i) {

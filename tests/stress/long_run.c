@@ -15,7 +15,8 @@
 #define DRUM_HALF 6.0f
 #define DRUM_SPEED (25.0f * 3.14159265f / 180.0f)
 
-static void build_drum(tb_world_id w) {
+tb_world_id stress_new_drum(void) {
+  tb_world_id w = stress_world(false);
   tb_body_def dd = tb_default_body_def();
   dd.type = TB_KINEMATIC_BODY;
   dd.position = (tb_vec2){0.0f, DRUM_Y};
@@ -50,6 +51,7 @@ static void build_drum(tb_world_id w) {
       tb_create_capsule_shape(b, &sd, &capsule);
     }
   }
+  return w;
 }
 
 #define HOUR_STEPS 216000
@@ -68,8 +70,7 @@ static void build_drum(tb_world_id w) {
  *   hour must not exceed the first half hour's (after a 6-minute warm-up). */
 void stress_one_hour(stress_result* out) {
   long long heap0 = stress_heap_live_bytes(), rss0 = stress_rss_bytes();
-  tb_world_id w = stress_world(false);
-  build_drum(w);
+  tb_world_id w = stress_new_drum();
   int n = 0;
   tb_body_id* b = stress_bodies(w, &n); /* the drum first */
   const double reach = DRUM_HALF * sqrt(2.0);
@@ -142,7 +143,18 @@ static int by_key(const void* a, const void* b) {
  *   the step count. So the second half's peak must not exceed the first
  *   half's (from step 10,000), not counting what the pools take in steps that
  *   retire the transient's slot (a fresh slot, and maybe a grown array). */
-void stress_churn(stress_result* out) {
+typedef struct churn_stats {
+  bool ok; /* the list of handles could be allocated */
+  int issued, failures, resolved, reissued;
+  long long heap_10k, first_half, second_half, retire_growth, leaked;
+  tb_counts counts;
+  uint64_t hash; /* tb_world_hash after the last step */
+} churn_stats;
+
+/* Runs `steps` steps of the churn (the test runs CHURN_STEPS; the determinism
+ * check hashes a prefix). */
+static churn_stats churn(int steps) {
+  churn_stats s = {0};
   long long heap0 = stress_heap_live_bytes();
   tb_world_id w = stress_world(true);
   stress_ground(w, 0.0f, 0.0f, 50.0f);
@@ -152,24 +164,23 @@ void stress_churn(stress_result* out) {
   int stale_b = 0, stale_j = 0;
   tb_body_id first_transient = {0, 0, 0};
   tb_joint_id first_transient_joint = {0, 0, 0};
-  int resolved = 0, failures = 0, issued = 0;
-  long long heap_10k = 0, heap_prev = 0, retire_growth = 0, first_half = 0, second_half = 0;
+  long long heap_prev = 0;
   int32_t transient_index = -1;
-  uint64_t* keys = malloc(sizeof *keys * 4 * CHURN_STEPS);
+  uint64_t* keys = malloc(sizeof *keys * 4 * (size_t)steps);
   tb_shape_def sd = tb_default_shape_def();
-  for (int step = 0; step < CHURN_STEPS && keys != NULL; ++step) {
+  for (int step = 0; step < steps && keys != NULL; ++step) {
     int slot = step % CHURN_ALIVE;
     tb_body_id prev = alive[(step + CHURN_ALIVE - 1) % CHURN_ALIVE];
     if (!tb_body_id_is_null(alive[slot])) {
       tb_joint_id joints[4];
       int nj = tb_body_get_joints(alive[slot], joints, 4);
-      if (tb_destroy_body(alive[slot]) != TB_OK) failures += 1;
+      if (tb_destroy_body(alive[slot]) != TB_OK) s.failures += 1;
       stale_bodies[stale_b++ % STALE_KEPT] = alive[slot];
       for (int k = 0; k < nj && k < 4; ++k) stale_joints[stale_j++ % STALE_KEPT] = joints[k];
     }
     float x = -40.0f + (float)(step % 80);
     alive[slot] = stress_box(w, (tb_vec2){x, 3.0f}, 0.0f, 0.3f, 0.3f, &sd);
-    keys[issued++] = body_key(alive[slot]);
+    keys[s.issued++] = body_key(alive[slot]);
     if (!tb_body_id_is_null(prev)) {
       tb_revolute_joint_def jd = tb_default_revolute_joint_def();
       jd.body_a = prev;
@@ -177,8 +188,8 @@ void stress_churn(stress_result* out) {
       jd.local_anchor_a = (tb_vec2){0.3f, 0.3f};
       jd.local_anchor_b = (tb_vec2){-0.3f, 0.3f};
       tb_joint_id j = tb_create_revolute_joint(w, &jd);
-      if (tb_joint_id_is_null(j)) failures += 1;
-      keys[issued++] = joint_key(j);
+      if (tb_joint_id_is_null(j)) s.failures += 1;
+      keys[s.issued++] = joint_key(j);
     }
     /* the transient: created, jointed, destroyed within the step */
     tb_body_id t = stress_box(w, (tb_vec2){0.0f, 20.0f}, 0.0f, 0.2f, 0.2f, &sd);
@@ -186,42 +197,50 @@ void stress_churn(stress_result* out) {
     dj.body_a = alive[slot];
     dj.body_b = t;
     tb_joint_id tj = tb_create_distance_joint(w, &dj);
-    if (tb_body_id_is_null(t) || tb_joint_id_is_null(tj)) failures += 1;
-    keys[issued++] = body_key(t);
-    keys[issued++] = joint_key(tj);
+    if (tb_body_id_is_null(t) || tb_joint_id_is_null(tj)) s.failures += 1;
+    keys[s.issued++] = body_key(t);
+    keys[s.issued++] = joint_key(tj);
     if (step == 0) first_transient = t, first_transient_joint = tj;
     bool retired = transient_index >= 0 && t.index1 != transient_index;
     transient_index = t.index1;
-    if (tb_destroy_joint(tj) != TB_OK || tb_destroy_body(t) != TB_OK) failures += 1;
-    if (!stress_step(w)) failures += 1;
+    if (tb_destroy_joint(tj) != TB_OK || tb_destroy_body(t) != TB_OK) s.failures += 1;
+    if (!stress_step(w)) s.failures += 1;
 
-    resolved += tb_body_is_valid(first_transient) + tb_joint_is_valid(first_transient_joint);
+    s.resolved += tb_body_is_valid(first_transient) + tb_joint_is_valid(first_transient_joint);
     for (int k = 0; k < STALE_KEPT; ++k) {
-      if (k < stale_b) resolved += tb_body_is_valid(stale_bodies[k]);
-      if (k < stale_j) resolved += tb_joint_is_valid(stale_joints[k]);
+      if (k < stale_b) s.resolved += tb_body_is_valid(stale_bodies[k]);
+      if (k < stale_j) s.resolved += tb_joint_is_valid(stale_joints[k]);
     }
     long long heap = stress_heap_live_bytes() - heap0;
-    if (step == 10000) heap_10k = heap;
-    if (retired && heap > heap_prev) retire_growth += heap - heap_prev;
+    if (step == 10000) s.heap_10k = heap;
+    if (retired && heap > heap_prev) s.retire_growth += heap - heap_prev;
     heap_prev = heap;
-    long long* half = step < CHURN_STEPS / 2 ? &first_half : &second_half;
-    if (step >= 10000 && heap - (half == &second_half ? retire_growth : 0) > *half) *half = heap;
+    long long* half = step < steps / 2 ? &s.first_half : &s.second_half;
+    if (step >= 10000 && heap - (half == &s.second_half ? s.retire_growth : 0) > *half) *half = heap;
   }
-  tb_counts counts = tb_world_get_counts(w);
+  s.counts = tb_world_get_counts(w);
+  s.hash = tb_world_hash(w);
   tb_destroy_world(w);
-  int reissued = 0;
+  s.ok = keys != NULL;
   if (keys != NULL) {
-    qsort(keys, (size_t)issued, sizeof keys[0], by_key);
-    for (int i = 1; i < issued; ++i) reissued += keys[i] == keys[i - 1];
+    qsort(keys, (size_t)s.issued, sizeof keys[0], by_key);
+    for (int i = 1; i < s.issued; ++i) s.reissued += keys[i] == keys[i - 1];
   }
   free(keys);
-  long long leaked = stress_heap_live_bytes() - heap0;
+  s.leaked = stress_heap_live_bytes() - heap0;
+  return s;
+}
+
+void stress_churn(stress_result* out) {
+  churn_stats s = churn(CHURN_STEPS);
   out->pass =
-      keys != NULL && failures == 0 && resolved == 0 && reissued == 0 && leaked == 0 && second_half <= first_half;
+      s.ok && s.failures == 0 && s.resolved == 0 && s.reissued == 0 && s.leaked == 0 && s.second_half <= s.first_half;
   stress_note(out,
               "%d steps, %d handles, %d failed calls; stale handles resolved %d times, reissued %d; engine heap "
               "%lld B at step 10,000, peak %lld B in steps 10,000-50,000 and %lld B after (+%lld B for retired "
               "slots); %lld B left after tb_destroy_world; %d bodies, %d joints alive at the end",
-              CHURN_STEPS, issued, failures, resolved, reissued, heap_10k, first_half, second_half, retire_growth,
-              leaked, counts.body_count, counts.joint_count);
+              CHURN_STEPS, s.issued, s.failures, s.resolved, s.reissued, s.heap_10k, s.first_half, s.second_half,
+              s.retire_growth, s.leaked, s.counts.body_count, s.counts.joint_count);
 }
+
+uint64_t stress_churn_hash(int steps) { return churn(steps).hash; }

@@ -12,13 +12,15 @@
 /* Two 1 m boxes of 1 kg (density 1) at x = -9 and 9 under a 20 x 1 m plank of
  * `ratio` kg (density ratio / 20) at rest on them, on the ground y = 0. The
  * bodies are created left support, right support, plank. */
-void stress_build_mass_ratio(tb_world_id w, float ratio) {
+tb_world_id stress_new_mass_ratio(float ratio) {
+  tb_world_id w = stress_world(false);
   stress_ground(w, 0.0f, 0.0f, 40.0f);
   stress_box(w, (tb_vec2){-9.0f, 0.5f}, 0.0f, 0.5f, 0.5f, NULL);
   stress_box(w, (tb_vec2){9.0f, 0.5f}, 0.0f, 0.5f, 0.5f, NULL);
   tb_shape_def heavy = tb_default_shape_def();
   heavy.density = ratio / 20.0f;
   stress_box(w, (tb_vec2){0.0f, 1.5f}, 0.0f, 10.0f, 0.5f, &heavy);
+  return w;
 }
 
 /* 30 s with sleep off (the solver holds the load every step). Rigid contacts
@@ -29,8 +31,7 @@ void stress_build_mass_ratio(tb_world_id w, float ratio) {
  * plank may not slide off (3 cm sideways). A collapse through the supports
  * sinks it by 1 m. */
 static void run_mass_ratio(stress_result* out, float ratio) {
-  tb_world_id w = stress_world(false);
-  stress_build_mass_ratio(w, ratio);
+  tb_world_id w = stress_new_mass_ratio(ratio);
   int n = 0;
   tb_body_id* b = stress_bodies(w, &n); /* ground, left, right, plank */
   double measured = tb_body_get_mass(b[3]) / tb_body_get_mass(b[1]);
@@ -66,7 +67,8 @@ void stress_mass_ratio_1000(stress_result* out) { run_mass_ratio(out, 1000.0f); 
 #define BALL_RADIUS 1.0f
 #define BALL_RATIO 670.0f
 
-void stress_build_ball_and_chain(tb_world_id w) {
+tb_world_id stress_new_ball_and_chain(void) {
+  tb_world_id w = stress_world(true);
   tb_body_def sd = tb_default_body_def();
   sd.position = (tb_vec2){0.0f, 25.0f};
   tb_body_id prev = tb_create_body(w, &sd);
@@ -96,6 +98,7 @@ void stress_build_ball_and_chain(tb_world_id w) {
     tb_create_revolute_joint(w, &jd);
     prev = b;
   }
+  return w;
 }
 
 /* The largest distance between a revolute joint's two anchors: 0 for a rigid
@@ -120,8 +123,7 @@ static double widest_gap(const tb_body_id* bodies, int count) {
  * A gap below the links' radius (5 cm) keeps the rounded ends of neighbouring
  * links overlapping: the chain looks and acts connected. */
 void stress_ball_and_chain(stress_result* out) {
-  tb_world_id w = stress_world(true);
-  stress_build_ball_and_chain(w);
+  tb_world_id w = stress_new_ball_and_chain();
   int n = 0;
   tb_body_id* b = stress_bodies(w, &n); /* links, then the ball (the anchor has no shape) */
   double ratio = tb_body_get_mass(b[n - 1]) / tb_body_get_mass(b[0]);

@@ -14,18 +14,21 @@
 /* A grid of 1 m boxes, 4 wide and 5 high, centres 0.75 m apart both ways (each
  * overlaps its neighbours by 25 %), the bottom row sunk 25 cm into the ground. */
 #define BOX_OVERLAP 0.25f
-void stress_build_overlap_boxes(tb_world_id w) {
+tb_world_id stress_new_overlap_boxes(void) {
+  tb_world_id w = stress_world(true);
   stress_ground(w, 0.0f, 0.0f, 20.0f);
   for (int row = 0; row < 5; ++row)
     for (int col = 0; col < 4; ++col)
       stress_box(w, (tb_vec2){0.75f * ((float)col - 1.5f), 0.25f + 0.75f * (float)row}, 0.0f, 0.5f, 0.5f, NULL);
+  return w;
 }
 
 /* A pile of 256 circles of radius 0.25 in a static U of inner width 6 m:
  * 16 rows of 16 on a lattice 0.375 m apart (each overlaps its neighbours by
  * 25 % of its diameter), the bottom row sunk 12.5 cm into the floor. */
 #define CIRCLE_OVERLAP 0.125f
-void stress_build_overlap_circles(tb_world_id w) {
+tb_world_id stress_new_overlap_circles(void) {
+  tb_world_id w = stress_world(true);
   tb_body_def bd = tb_default_body_def();
   tb_body_id u = tb_create_body(w, &bd);
   tb_shape_def sd = tb_default_shape_def();
@@ -39,6 +42,7 @@ void stress_build_overlap_circles(tb_world_id w) {
   for (int row = 0; row < 16; ++row)
     for (int col = 0; col < 16; ++col)
       stress_circle(w, (tb_vec2){-2.8125f + 0.375f * (float)col, 0.125f + 0.375f * (float)row}, 0.25f, NULL);
+  return w;
 }
 
 /* How far the deepest overlap at a touching point goes beyond the depth its
@@ -79,12 +83,11 @@ static double deepest_excess_overlap(const tb_body_id* bodies, int count) {
  * step, must stay below the cap plus g d / cap, and at the end no overlap
  * may be more than one linear slop (5 mm) deeper than its contact force
  * explains. */
-static void recover(stress_result* out, void (*build)(tb_world_id), double overlap) {
+static void recover(stress_result* out, tb_world_id (*make)(void), double overlap) {
   tb_world_def defaults = tb_default_world_def();
   double cap = defaults.contact_push_max_velocity;
   double bound = cap + STRESS_G * overlap / cap;
-  tb_world_id w = stress_world(true);
-  build(w);
+  tb_world_id w = make();
   int n = 0;
   tb_body_id* b = stress_bodies(w, &n);
   double peak = 0.0, start = 0.0;
@@ -104,5 +107,5 @@ static void recover(stress_result* out, void (*build)(tb_world_id), double overl
   tb_destroy_world(w);
 }
 
-void stress_overlap_boxes(stress_result* out) { recover(out, stress_build_overlap_boxes, BOX_OVERLAP); }
-void stress_overlap_circles(stress_result* out) { recover(out, stress_build_overlap_circles, CIRCLE_OVERLAP); }
+void stress_overlap_boxes(stress_result* out) { recover(out, stress_new_overlap_boxes, BOX_OVERLAP); }
+void stress_overlap_circles(stress_result* out) { recover(out, stress_new_overlap_circles, CIRCLE_OVERLAP); }

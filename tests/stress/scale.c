@@ -13,8 +13,7 @@
 /* Runs a pyramid of base 20 (1 m boxes) with its base centred at (x0, x0),
  * sleep off, and returns its bodies' positions relative to (x0, x0). */
 static tb_vec2* run_offset_pyramid(float x0, int* count) {
-  tb_world_id w = stress_world(false);
-  stress_build_pyramid(w, x0, x0, 20, 0.5f);
+  tb_world_id w = stress_new_pyramid(x0, x0, 20, 0.5f);
   int n = 0;
   tb_body_id* b = stress_bodies(w, &n);
   for (int i = 0; i < SCALE_STEPS; ++i)
@@ -66,8 +65,7 @@ void stress_scale_offset(stress_result* out) {
  * 2.5 cm pyramid's top sinks about 0.1 mm per level (measured 0.9 mm in all,
  * 3.6 % of a box), the 50 m one's nothing. */
 static void run_sized_pyramid(stress_result* out, float h) {
-  tb_world_id w = stress_world(false);
-  stress_build_pyramid(w, 0.0f, 0.0f, 10, h);
+  tb_world_id w = stress_new_pyramid(0.0f, 0.0f, 10, h);
   int n = 0;
   tb_body_id* b = stress_bodies(w, &n);
   tb_body_id top = b[n - 1];

@@ -113,22 +113,32 @@ void stress_large_boxes(stress_result* out);
 void stress_one_hour(stress_result* out);
 void stress_churn(stress_result* out);
 
-/* ---- scene builders shared with the determinism check ------------------- */
+/* ---- the scenes, shared with the determinism check ---------------------- */
 
-/* Each builds one stress scene into a fresh world (gravity default). */
-void stress_build_stack(tb_world_id w, int count);
-void stress_build_pyramid(tb_world_id w, float x0, float y0, int base, float h);
-void stress_build_card_house(tb_world_id w);
-void stress_build_arch(tb_world_id w);
-void stress_build_mass_ratio(tb_world_id w, float ratio);
-void stress_build_ball_and_chain(tb_world_id w);
-void stress_build_overlap_boxes(tb_world_id w);
-void stress_build_overlap_circles(tb_world_id w);
-void stress_build_bullets(tb_world_id w, int count, unsigned seed);
+/* Each creates a world with the settings its test uses (sleep on or off) and
+ * builds that test's scene in it: the tests start from these, and so does the
+ * determinism check, so the scene it hashes is the one the test runs. */
+tb_world_id stress_new_stack(int count);
+tb_world_id stress_new_pyramid(float x0, float y0, int base, float h);
+tb_world_id stress_new_card_house(void);
+tb_world_id stress_new_arch(void);
+tb_world_id stress_new_mass_ratio(float ratio);
+tb_world_id stress_new_ball_and_chain(void);
+tb_world_id stress_new_overlap_boxes(void);
+tb_world_id stress_new_overlap_circles(void);
+tb_world_id stress_new_bullets(void);
+/* The spinner's two planks are returned through the pointers (either may be
+ * NULL). */
+tb_world_id stress_new_spinner(tb_body_id* free_plank, tb_body_id* dropped);
+/* one_hour's turning drum. */
+tb_world_id stress_new_drum(void);
+/* churn changes its world every step: this runs the test's first `steps`
+ * steps and returns the world's hash after the last. */
+uint64_t stress_churn_hash(int steps);
 
 /* Hashes of the stress scenes after a fixed number of steps, one line per
- * scene ("name hash"), written to `out`; run twice in-process, and false when
- * the two runs differ. */
-bool stress_print_hashes(FILE* out);
+ * scene ("name hash"), written to `out`. With runs = 2 each scene is run
+ * twice in-process, and false is returned when the two runs differ. */
+bool stress_print_hashes(FILE* out, int runs);
 
 #endif

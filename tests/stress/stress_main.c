@@ -1,7 +1,11 @@
 /* The stress suite's command line (`make stress`):
  *   stress [--fast] [--only NAME] [--report FILE] [--o0-hashes FILE]
- *   stress --hashes     prints each stress scene's hash (for the -O0/-O2 check)
- * Exits non-zero when a test fails. */
+ *   stress --hashes       prints each stress scene's hash, each scene run
+ *                         twice (exits 1 when the two runs differ)
+ *   stress --hashes-once  the same from one run (the -O0 build's side of the
+ *                         -O0/-O2 check, as -O0 is slow)
+ * --only NAME runs one test ("determinism": the hash check alone); an unknown
+ * NAME is an error that lists the tests. Exits non-zero when a test fails. */
 #include <stdio.h>
 #include <string.h>
 
@@ -11,7 +15,8 @@
 int main(int argc, char** argv) {
   stress_options options = {0};
   for (int i = 1; i < argc; ++i) {
-    if (strcmp(argv[i], "--hashes") == 0) return stress_print_hashes(stdout) ? 0 : 1;
+    if (strcmp(argv[i], "--hashes") == 0) return stress_print_hashes(stdout, 2) ? 0 : 1;
+    if (strcmp(argv[i], "--hashes-once") == 0) return stress_print_hashes(stdout, 1) ? 0 : 1;
     if (strcmp(argv[i], "--fast") == 0) {
       options.fast_only = true;
     } else if (strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
@@ -21,7 +26,9 @@ int main(int argc, char** argv) {
     } else if (strcmp(argv[i], "--o0-hashes") == 0 && i + 1 < argc) {
       options.o0_hashes = argv[++i];
     } else {
-      fprintf(stderr, "usage: %s [--fast] [--only NAME] [--report FILE] [--o0-hashes FILE] | --hashes\n", argv[0]);
+      fprintf(stderr,
+              "usage: %s [--fast] [--only NAME] [--report FILE] [--o0-hashes FILE] | --hashes | --hashes-once\n",
+              argv[0]);
       return 2;
     }
   }

@@ -111,14 +111,18 @@ static void judge_soft(stress_result* out, drift d, double predicted) {
               d.sank, predicted, d.angle, d.finite ? "" : ", NOT FINITE");
 }
 
-void stress_build_stack(tb_world_id w, int count) {
+tb_world_id stress_new_stack(int count) {
+  tb_world_id w = stress_world(false);
   stress_ground(w, 0.0f, 0.0f, 20.0f);
   stress_column(w, 0.0f, 0.0f, count, 0.5f);
+  return w;
 }
 
-void stress_build_pyramid(tb_world_id w, float x0, float y0, int base, float h) {
+tb_world_id stress_new_pyramid(float x0, float y0, int base, float h) {
+  tb_world_id w = stress_world(false);
   stress_ground(w, x0, y0, 2.0f * h * (float)base);
   stress_pyramid(w, x0, y0, base, h);
+  return w;
 }
 
 /* The top of a structure is its last body (each builder creates it last). */
@@ -131,8 +135,7 @@ static tb_body_id last_body(tb_world_id w) {
 }
 
 static void run_stack(stress_result* out, int count) {
-  tb_world_id w = stress_world(false);
-  stress_build_stack(w, count);
+  tb_world_id w = stress_new_stack(count);
   judge_soft(out, track(w, last_body(w), STAND_STEPS), column_sinking(count));
   tb_destroy_world(w);
 }
@@ -141,8 +144,7 @@ void stress_stack_15(stress_result* out) { run_stack(out, 15); }
 void stress_stack_30(stress_result* out) { run_stack(out, 30); }
 
 static void run_pyramid(stress_result* out, int base) {
-  tb_world_id w = stress_world(false);
-  stress_build_pyramid(w, 0.0f, 0.0f, base, 0.5f);
+  tb_world_id w = stress_new_pyramid(0.0f, 0.0f, base, 0.5f);
   judge_soft(out, track(w, last_body(w), STAND_STEPS), pyramid_sinking(base));
   tb_destroy_world(w);
 }
@@ -174,7 +176,8 @@ void stress_pyramid_100(stress_result* out) { run_pyramid(out, 100); }
 #define CARD_LEVELS 5
 #define CARD_FLAT_GAP 0.0005f /* each flat card's end 0.5 mm short of an apex's axis */
 
-void stress_build_card_house(tb_world_id w) {
+tb_world_id stress_new_card_house(void) {
+  tb_world_id w = stress_world(false);
   stress_ground(w, 0.0f, 0.0f, 5.0f);
   float s = sinf(CARD_TILT), c = cosf(CARD_TILT);
   /* a leaning card's centre relative to its frame's axis and floor */
@@ -201,14 +204,14 @@ void stress_build_card_house(tb_world_id w) {
     }
     floor_y = top + 2.0f * CARD_HALF_T;
   }
+  return w;
 }
 
 /* The top frame's right card: a collapse drops it by up to its 40 cm length.
  * 1 cm (2.5 % of a card) allows the frames to settle onto each other from
  * their 1 mm start gaps and the soft contacts' overlap under a few grams. */
 void stress_card_house(stress_result* out) {
-  tb_world_id w = stress_world(false);
-  stress_build_card_house(w);
+  tb_world_id w = stress_new_card_house();
   judge(out, track(w, last_body(w), STAND_STEPS), 0.01);
   tb_destroy_world(w);
 }
@@ -225,7 +228,8 @@ void stress_card_house(stress_result* out) {
 #define ARCH_R_IN 4.0f
 #define ARCH_R_OUT 5.0f
 
-void stress_build_arch(tb_world_id w) {
+tb_world_id stress_new_arch(void) {
+  tb_world_id w = stress_world(false);
   stress_ground(w, 0.0f, 0.0f, 20.0f);
   int order[ARCH_BLOCKS];
   /* keystone last, so that the tracked top is the last body */
@@ -255,13 +259,13 @@ void stress_build_arch(tb_world_id w) {
     tb_shape_def sd = tb_default_shape_def();
     tb_create_polygon_shape(b, &sd, &block);
   }
+  return w;
 }
 
 /* A collapsing arch drops its keystone by metres; 5 cm is 5 % of the ring's
  * 1 m thickness, room for the soft contacts' overlap at 10 joints. */
 void stress_arch(stress_result* out) {
-  tb_world_id w = stress_world(false);
-  stress_build_arch(w);
+  tb_world_id w = stress_new_arch();
   judge(out, track(w, last_body(w), STAND_STEPS), 0.05);
   tb_destroy_world(w);
 }
