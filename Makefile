@@ -110,11 +110,13 @@ $(BUILD)/tools/determinism: $(BUILD)/obj/tools/determinism.o $(LIB_A)
 
 # Same suites with AddressSanitizer and UndefinedBehaviorSanitizer, in-process
 # (CK_FORK=no) so that LeakSanitizer sees every test's allocations.
+# tools/lsan.supp holds OSMesa's own leak (the render suite), nothing else.
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 sanitize: deps-test
 	@$(MAKE) --no-print-directory BUILD=build/sanitize EXTRA_CFLAGS="$(SAN)" tests \
 	  $(EXTRA_SAN_BIN:$(BUILD)/%=build/sanitize/%)
 	@CK_FORK=no ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  LSAN_OPTIONS=suppressions=$(abspath tools/lsan.supp) \
 	  tools/run_tests.sh $(UNIT_SRC:tests/%.c=build/sanitize/tests/%) $(REF_SRC:tests/reference/%.c=build/sanitize/tests/reference/%) \
 	  $(EXTRA_SAN_BIN:$(BUILD)/%=build/sanitize/%)
 

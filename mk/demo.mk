@@ -59,6 +59,7 @@ $(RENDER_TEST): $(BUILD)/obj/tests/render/test_render.o $(RENDER_OBJ) $(SCENE_CA
 
 # run_tests.sh runs the suite; Mesa's shader cache stays off through this wrapper.
 EXTRA_TEST_BIN += $(BUILD)/tests/render/run_test_render
+EXTRA_SAN_BIN += $(BUILD)/tests/render/run_test_render
 EXTRA_TEST_DEPS += demo
 $(BUILD)/tests/render/run_test_render: $(RENDER_TEST)
 	@printf '#!/bin/sh\nMESA_SHADER_CACHE_DISABLE=true exec "%s" "$$@"\n' "$(abspath $(RENDER_TEST))" > $@

@@ -1,11 +1,15 @@
 # make fuzz, make fuzz-smoke: libFuzzer harnesses (issue 7). Included by the Makefile.
 # Each harness in fuzz/ is built with clang -fsanitize=fuzzer,address,undefined
 # together with the library sources, and runs from its seed corpus in the repo
-# (fuzz/corpus/NAME, read only) plus what it finds (build/fuzz/corpus/NAME, not
-# committed). A failed invariant or a sanitizer report stops the run and leaves
-# the input in build/fuzz/crash-NAME-*; replay it with build/fuzz/fuzz_NAME FILE.
-#   make fuzz                 each harness for FUZZ_SECONDS (default 180 s)
-#   make fuzz-smoke           each harness for 20 s (CI)
+# (fuzz/corpus/NAME) plus what it finds (build/fuzz/corpus/NAME). A failed
+# invariant or a sanitizer report stops the run and leaves the input in
+# build/fuzz/crash-NAME-*; replay it with build/fuzz/fuzz_NAME FILE.
+#   make fuzz                 each harness for FUZZ_SECONDS (default 180 s), then
+#                             fuzz-merge: the repo corpus keeps what the run found
+#   make fuzz-smoke           each harness for 20 s (CI; leaves fuzz/ untouched)
+#   make fuzz-merge           fold build/fuzz/corpus/NAME into fuzz/corpus/NAME,
+#                             keeping only inputs that add coverage (libFuzzer
+#                             -merge=1); commit fuzz/corpus afterwards
 #   make fuzz FUZZ_NAMES=hull only one harness
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 180
@@ -34,7 +38,17 @@ define fuzz_run
 
 endef
 
-.PHONY: fuzz fuzz-smoke fuzz-build
+# $(call fuzz_merge,NAME): new inputs of the run that add coverage go to the repo
+define fuzz_merge
+	@mkdir -p $(FUZZ_DIR)/corpus/$(1) fuzz/corpus/$(1)
+	@before=$$(ls fuzz/corpus/$(1) | wc -l); \
+	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 $(FUZZ_DIR)/fuzz_$(1) -merge=1 fuzz/corpus/$(1) $(FUZZ_DIR)/corpus/$(1) \
+	  2>$(FUZZ_DIR)/merge_$(1).log || { tail -n 20 $(FUZZ_DIR)/merge_$(1).log; exit 1; }; \
+	  echo "== fuzz-merge $(1): fuzz/corpus/$(1) $$before -> $$(ls fuzz/corpus/$(1) | wc -l) inputs"
+
+endef
+
+.PHONY: fuzz fuzz-smoke fuzz-build fuzz-merge
 fuzz-build:
 	@tools/deps.sh fuzz
 	@$(MAKE) --no-print-directory $(FUZZ_BIN)
@@ -44,6 +58,10 @@ fuzz: fuzz-build
 	@rm -f $(FUZZ_DIR)/failed
 	$(foreach n,$(FUZZ_NAMES),$(call fuzz_run,$(n),$(FUZZ_SECONDS)))
 	@if [ -f $(FUZZ_DIR)/failed ]; then echo "== fuzz: failed: $$(cat $(FUZZ_DIR)/failed | tr '\n' ' ')"; exit 1; fi
+	@$(MAKE) --no-print-directory fuzz-merge
+
+fuzz-merge: fuzz-build
+	$(foreach n,$(FUZZ_NAMES),$(call fuzz_merge,$(n)))
 
 fuzz-smoke: fuzz-build
 	@rm -f $(FUZZ_DIR)/failed

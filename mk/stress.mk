@@ -19,6 +19,7 @@ $(STRESS_DIR)/stress_fast: $(BUILD)/obj/tests/stress/stress_fast.o $(STRESS_OBJ)
 	$(CC) $(EXTRA_CFLAGS) $(STRESS_WRAP) -o $@ $^ $(LDLIBS_ALL)
 
 EXTRA_TEST_BIN += $(STRESS_DIR)/stress_fast
+EXTRA_SAN_BIN += $(STRESS_DIR)/stress_fast
 FORMATTED += tests/stress/*.c tests/stress/*.h
 
 .PHONY: stress

@@ -32,6 +32,7 @@ $(VIEWER_BIN): $(VIEWER_OBJ) $(VIEWER_RENDER_OBJ) $(SCENE_CATALOGUE_OBJ) $(LIB_A
 # run_tests.sh runs this wrapper: the scripted offscreen run, checked by
 # tools/viewer_smoke.sh.
 EXTRA_TEST_BIN += $(VIEWER_SMOKE)
+EXTRA_SAN_BIN += $(VIEWER_SMOKE)
 $(VIEWER_SMOKE): $(VIEWER_BIN) tools/viewer_smoke.sh
 	@mkdir -p $(dir $@)
 	@printf '#!/bin/sh\nexec "%s" "%s" "$$@"\n' "$(abspath tools/viewer_smoke.sh)" "$(abspath $(VIEWER_BIN))" > $@

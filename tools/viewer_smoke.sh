@@ -13,7 +13,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 log=$tmp/log
 
-SDL_VIDEODRIVER=offscreen MESA_SHADER_CACHE_DISABLE=true \
+# Under `make sanitize` the viewer keeps ASan's memory-error checks and UBSan,
+# but not LeakSanitizer: SDL's video and EGL drivers are dlopen'ed and closed
+# again, so what they leave at exit shows as leaks from "<unknown module>" that
+# no suppression can name (measured: 1.06 MB in 261 blocks, not one from
+# tumble or the viewer). A build without ASan ignores the variable.
+SDL_VIDEODRIVER=offscreen MESA_SHADER_CACHE_DISABLE=true ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
   timeout 120 "$viewer" --scene pyramid_20 --frames 120 --script --screenshot "$tmp/last.ppm" >"$log" 2>&1
 status=$?
 sed 's/^/   | /' "$log"
