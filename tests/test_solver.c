@@ -770,7 +770,8 @@ END_TEST
  * if each pair collides in its own step: when ball k is struck, the contact
  * k/k+1 must not be solved in the same step, or the impulse is shared among
  * the touching balls as in an inelastic collision, and restitution (applied
- * only to points that approached at the step's start) cannot undo it. The
+ * only to points whose normal speed at the step's start was above the
+ * threshold; a touching row's is 0) cannot undo it. The
  * solver sees the next contact in that step when its gap is below
  * TB_SPECULATIVE_DISTANCE (0.02 m), so the gaps are 1.5 x that, 0.03 m (6% of
  * a diameter: small). The brief's bounds: the last ball leaves with >= 90%
