@@ -218,27 +218,27 @@ tb_manifold tb_collide_chain_segment_and_polygon_unchecked(const tb_chain_segmen
 
 /* The public forms check their arguments as the other tb_collide_* do (see
  * tb_collide_args_ok) and give an empty manifold on bad input. */
-#define WHY(check, shape) ((shape) != NULL ? check(shape) : NULL)
 
 tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_transform xfa, const tb_circle* b,
                                                 tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(check_chain_segment, a), xfa, b, WHY(tb_check_circle, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(check_chain_segment, a), xfa, b,
+                          TB_COLLIDE_WHY(tb_check_circle, b), xfb))
     return no_contact;
   return tb_collide_chain_segment_and_circle_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,
                                                  tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(check_chain_segment, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(check_chain_segment, a), xfa, b,
+                          TB_COLLIDE_WHY(tb_check_capsule, b), xfb))
     return no_contact;
   return tb_collide_chain_segment_and_capsule_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
                                                  tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(check_chain_segment, a), xfa, b, WHY(tb_check_polygon, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(check_chain_segment, a), xfa, b,
+                          TB_COLLIDE_WHY(tb_check_polygon, b), xfb))
     return no_contact;
   return tb_collide_chain_segment_and_polygon_unchecked(a, xfa, b, xfb);
 }
-
-#undef WHY

@@ -627,64 +627,71 @@ void tb_collide_polygons_into(const tb_polygon* a, tb_transform xfa, const tb_po
 static const tb_manifold no_contact = {.point_count = 0};
 
 /* tb_check_*'s verdict on a shape that may be NULL (NULL is reported first) */
-#define WHY(check, shape) ((shape) != NULL ? check(shape) : NULL)
 
 tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_circle, a), xfa, b, WHY(tb_check_circle, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_circle, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
+                          xfb))
     return no_contact;
   return tb_collide_circles_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_capsule, a), xfa, b, WHY(tb_check_circle, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_capsule, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
+                          xfb))
     return no_contact;
   return tb_collide_capsule_and_circle_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_capsule, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_capsule, a), xfa, b, TB_COLLIDE_WHY(tb_check_capsule, b),
+                          xfb))
     return no_contact;
   return tb_collide_capsules_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_segment, a), xfa, b, WHY(tb_check_circle, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_segment, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
+                          xfb))
     return no_contact;
   return tb_collide_segment_and_circle_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
                                            tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_segment, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_segment, a), xfa, b, TB_COLLIDE_WHY(tb_check_capsule, b),
+                          xfb))
     return no_contact;
   return tb_collide_segment_and_capsule_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
                                            tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_segment, a), xfa, b, WHY(tb_check_polygon, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_segment, a), xfa, b, TB_COLLIDE_WHY(tb_check_polygon, b),
+                          xfb))
     return no_contact;
   return tb_collide_segment_and_polygon_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_polygon, a), xfa, b, WHY(tb_check_circle, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_polygon, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
+                          xfb))
     return no_contact;
   return tb_collide_polygon_and_circle_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
                                            tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_polygon, a), xfa, b, WHY(tb_check_capsule, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_polygon, a), xfa, b, TB_COLLIDE_WHY(tb_check_capsule, b),
+                          xfb))
     return no_contact;
   return tb_collide_polygon_and_capsule_unchecked(a, xfa, b, xfb);
 }
 
 tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb) {
-  if (!tb_collide_args_ok(__func__, a, WHY(tb_check_polygon, a), xfa, b, WHY(tb_check_polygon, b), xfb))
+  if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_polygon, a), xfa, b, TB_COLLIDE_WHY(tb_check_polygon, b),
+                          xfb))
     return no_contact;
   local_manifold m = {0};
   polygons_local(&m, a, xfa, b, xfb);
   return to_world(&m, xfa);
 }
-#undef WHY

@@ -38,6 +38,9 @@ static inline uint32_t tb_make_feature_id(uint32_t index_a, uint32_t type_a, uin
  * is not finite, beyond TB_MAX_LENGTH or not a unit rotation. */
 bool tb_collide_args_ok(const char* fn, const void* a, const char* why_a, tb_transform xfa, const void* b,
                         const char* why_b, tb_transform xfb);
+/* why_a / why_b for tb_collide_args_ok: check's answer, NULL for a NULL shape
+ * (tb_collide_args_ok reports that one itself). */
+#define TB_COLLIDE_WHY(check, shape) ((shape) != NULL ? check(shape) : NULL)
 
 /* The narrow phase's collide functions: the public ones without their checks.
  * The world's shapes were vetted when they were made and its transforms come
