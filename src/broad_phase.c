@@ -145,8 +145,8 @@ bool tb_broad_phase_reserve(tb_world* w, tb_body_type tree, int proxies) {
          tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + proxies, sizeof(int));
 }
 
-tb_result tb_broad_phase_prepare_insert(tb_world* w, const tb_shape* s, tb_transform xf, tb_body_type tree,
-                                        int proxies, const char* fn) {
+tb_result tb_broad_phase_prepare_insert(tb_world* w, const tb_shape* s, tb_transform xf, tb_body_type tree, int proxies,
+                                        const char* fn) {
   tb_aabb box = tb_shape_geom_aabb(s, xf);
   if (!tb_point_ok(box.lower) || !tb_point_ok(box.upper))
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT,

@@ -15,7 +15,7 @@ typedef struct tb_joint_tree {
   struct tb_jt_node* nodes;
   int node_count, node_capacity;
   int body_nodes; /* nodes [0, body_nodes) are bodies, the rest joints */
-  int* order; /* parents before children */
+  int* order;     /* parents before children */
   int order_capacity;
   int* body_scratch; /* per awake body: union-find parent and flag, then its node */
   int body_capacity;
