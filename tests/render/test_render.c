@@ -2,11 +2,13 @@
  * pixels land where the world is, in the colour of the body's state, the PNG
  * holds the same pixels, and every scene steps 600 times without NaN or bodies
  * leaving its bounds and renders a frame. Runs with MESA_SHADER_CACHE_DISABLE. */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, close */
 #include <math.h>
 #include <png.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../test_util.h"
 #include "render/camera.h"
@@ -140,7 +142,15 @@ END_TEST
 START_TEST(png_holds_the_rendered_pixels) {
   tb_world_id w = box_world(TB_STATIC_BODY, NULL);
   const uint8_t* img = render(w, test_camera());
-  char path[] = "build/tests/render/test_render.png";
+  /* A fresh file in the temporary directory: the test must not depend on a
+   * build folder that another target creates (make sanitize runs from a clone
+   * that never ran make test). */
+  const char* tmp = getenv("TMPDIR");
+  char path[512];
+  snprintf(path, sizeof path, "%s/tumble_test_render_XXXXXX", tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp");
+  int fd = mkstemp(path);
+  ck_assert_msg(fd >= 0, "mkstemp(%s) failed", path);
+  close(fd);
   char error[256];
   ck_assert_msg(tbr_write_png(path, img, W, H, error, sizeof error), "%s", error);
   png_image read;
