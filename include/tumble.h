@@ -5,8 +5,9 @@
  * Conventions
  * - Units: metres, kilograms, seconds, radians. Tuned for objects of 0.05 to 50 m.
  * - Objects are reached through handles (tb_world_id, tb_body_id, tb_shape_id) that
- *   carry a generation: a stale handle (its object was destroyed) or a foreign one
- *   is reported as an error, never dereferenced.
+ *   carry a generation: a stale handle (its object, or its whole world, was
+ *   destroyed) or a foreign one is reported as an error, never dereferenced. No
+ *   handle is ever handed out twice, also across worlds that reuse a world slot.
  * - Definitions are plain structs. The one rule for defaults: start every definition
  *   from its tb_default_*_def() function, then change the fields you care about.
  * - Every entry point validates its input (NULL, NaN/Inf, negative sizes, degenerate
@@ -233,7 +234,12 @@ typedef struct tb_world_def {
 
 tb_world_def tb_default_world_def(void);
 
-/* Create a world; returns the null handle on error (see tb_last_error()). */
+/* Create a world; returns the null handle on error (see tb_last_error()).
+ * At most 128 worlds exist at once. Each of the 128 world slots holds 65,536
+ * worlds in turn and is then retired (TB_ERR_CAPACITY once all are), so a world
+ * handle never matches a later world; a slot keeps 2 bytes per body, shape,
+ * chain and joint slot its worlds ever used, so that the next world there never
+ * reissues an old object handle. */
 tb_world_id tb_create_world(const tb_world_def* def);
 tb_result tb_destroy_world(tb_world_id world);
 bool tb_world_is_valid(tb_world_id world);

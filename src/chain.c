@@ -153,7 +153,6 @@ void tb_chains_destroy_of_body(tb_world* w, int body) {
 void tb_chains_free(tb_world* w) {
   for (int i = 0; i < w->chains.high; ++i)
     if (tb_pool_alive(&w->chains, i)) free(chain_at(w, i)->shapes);
-  tb_pool_free(&w->chains);
 }
 
 /* ---- manifolds ---------------------------------------------------------- */

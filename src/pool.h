@@ -7,6 +7,15 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* What a world's pool leaves to the next world in the same world slot: the
+ * generation each slot starts at (UINT16_MAX: retired, never handed out). Handles
+ * carry the world slot but not the world's life, so the next world must not hand
+ * out a (slot, generation) pair that a handle from an earlier world holds. */
+typedef struct tb_pool_history {
+  uint16_t* generations;
+  int count; /* slots the earlier worlds handed out */
+} tb_pool_history;
+
 typedef struct tb_pool {
   void* items;
   uint16_t* generations; /* bumped on free; a handle matches only its own life */
@@ -16,10 +25,17 @@ typedef struct tb_pool {
   int count; /* slots in use */
   int high;  /* slots ever handed out */
   int free_head;
+  tb_pool_history inherited; /* where slots not yet handed out start */
 } tb_pool;
 
 void tb_pool_init(tb_pool* pool, size_t item_size);
 void tb_pool_free(tb_pool* pool);
+/* Starts an empty pool from the history an earlier world left (moved in). */
+void tb_pool_inherit(tb_pool* pool, tb_pool_history* history);
+/* Frees the pool and leaves its history: every slot ever handed out starts past
+ * the generations of the handles to it. false when out of memory (then the
+ * history is freed and the world slot must not be used again). */
+bool tb_pool_end_life(tb_pool* pool, tb_pool_history* history);
 /* Returns a zeroed slot index, or -1 when out of memory. */
 int tb_pool_alloc(tb_pool* pool);
 void tb_pool_release(tb_pool* pool, int index);

@@ -9,9 +9,22 @@
 #include "timer.h"
 
 /* Worlds live in a fixed table so that a world handle can be checked without
- * touching freed memory. */
+ * touching freed memory. A slot's generation counts the worlds it held; one
+ * whose generation would wrap is retired, so an old world handle never matches
+ * a new world. Object handles carry the world slot but not its generation: the
+ * pools of a slot's next world start where the last one's left off. */
 static tb_world* worlds[TB_MAX_WORLDS];
 static uint16_t world_generations[TB_MAX_WORLDS];
+static bool world_retired[TB_MAX_WORLDS];
+enum { HISTORY_BODIES, HISTORY_SHAPES, HISTORY_CHAINS, HISTORY_JOINTS, HISTORY_POOLS };
+static tb_pool_history handle_history[TB_MAX_WORLDS][HISTORY_POOLS];
+
+static tb_pool* handle_pool(tb_world* w, int which) {
+  return which == HISTORY_BODIES   ? &w->bodies
+         : which == HISTORY_SHAPES ? &w->shapes
+         : which == HISTORY_CHAINS ? &w->chains
+                                   : &w->joints;
+}
 
 tb_world_def tb_default_world_def(void) {
   return (tb_world_def){.gravity = {0.0f, -10.0f},
@@ -88,11 +101,15 @@ tb_world_id tb_create_world(const tb_world_def* def) {
             (double)def->hit_event_threshold);
     return null_id;
   }
-  int slot = -1;
-  for (int i = 0; i < TB_MAX_WORLDS && slot < 0; ++i)
-    if (worlds[i] == NULL) slot = i;
+  int slot = -1, retired = 0;
+  for (int i = 0; i < TB_MAX_WORLDS && slot < 0; ++i) {
+    retired += world_retired[i];
+    if (worlds[i] == NULL && !world_retired[i]) slot = i;
+  }
   if (slot < 0) {
-    tb_fail(NULL, TB_ERR_CAPACITY, "tb_create_world: all %d worlds are in use", TB_MAX_WORLDS);
+    tb_fail(NULL, TB_ERR_CAPACITY,
+            "tb_create_world: all %d world slots are in use or retired (%d retired: each holds 65,535 worlds in turn)",
+            TB_MAX_WORLDS, retired);
     return null_id;
   }
   tb_world* w = calloc(1, sizeof *w);
@@ -121,6 +138,7 @@ tb_world_id tb_create_world(const tb_world_def* def) {
   tb_pool_init(&w->chains, sizeof(tb_chain));
   tb_pool_init(&w->joints, sizeof(tb_joint));
   tb_pool_init(&w->islands, tb_island_size());
+  for (int k = 0; k < HISTORY_POOLS; ++k) tb_pool_inherit(handle_pool(w, k), &handle_history[slot][k]);
   w->contact_hertz = def->contact_hertz;
   w->contact_damping_ratio = def->contact_damping_ratio;
   w->contact_push_max_velocity = def->contact_push_max_velocity;
@@ -226,14 +244,23 @@ tb_joint_id tb_make_joint_id(const tb_world* w, int index) {
 tb_result tb_destroy_world(tb_world_id id) {
   tb_world* w = tb_world_get_unlocked(id, "tb_destroy_world");
   if (w == NULL) return tb_last_result();
-  worlds[w->index] = NULL;
-  world_generations[w->index] += 1;
-  tb_pool_free(&w->bodies);
-  tb_pool_free(&w->shapes);
-  tb_pool_free(&w->contacts);
-  tb_pool_free(&w->joints);
-  tb_islands_free(w);
+  int slot = w->index;
+  worlds[slot] = NULL;
   tb_chains_free(w);
+  bool histories_kept = true;
+  for (int k = 0; k < HISTORY_POOLS; ++k)
+    histories_kept &= tb_pool_end_life(handle_pool(w, k), &handle_history[slot][k]);
+  if (world_generations[slot] == UINT16_MAX || !histories_kept) {
+    world_retired[slot] = true;
+    for (int k = 0; k < HISTORY_POOLS; ++k) {
+      free(handle_history[slot][k].generations);
+      handle_history[slot][k] = (tb_pool_history){NULL, 0};
+    }
+  } else {
+    world_generations[slot] += 1;
+  }
+  tb_pool_free(&w->contacts);
+  tb_islands_free(w);
   free(w->awake);
   free(w->states);
   free(w->motions);
@@ -745,10 +772,9 @@ static void hash_tree(hasher* s, const tb_tree* t) {
   }
 }
 
-static void hash_shape_id(hasher* s, tb_shape_id id) {
-  hash_int(s, id.index1);
-  hash_int(s, id.generation);
-}
+/* The slot only: a generation depends on what earlier worlds in the same world
+ * slot did, and a world's hash must not. */
+static void hash_shape_id(hasher* s, tb_shape_id id) { hash_int(s, id.index1); }
 
 /* Events of the last step (and the end events of shapes destroyed since). */
 static void hash_events(hasher* s, const tb_world* w) {

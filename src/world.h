@@ -121,6 +121,7 @@ size_t tb_island_size(void);
 
 /* Chains of a body go with it (chain.c). */
 void tb_chains_destroy_of_body(tb_world* w, int body);
+/* Frees what each live chain owns; the chain pool itself goes with the world. */
 void tb_chains_free(tb_world* w);
 
 /* Shape AABBs and broad-phase proxies follow a body that moved. */
