@@ -47,7 +47,7 @@ $(BENCH)/bench_report: $(BUILD)/obj/tools/bench_report.o
 BENCH_RESULTS ?= results
 BENCH_TOOLS := $(BENCH)/bench_dynamics $(BENCH)/bench_dynamics_b2 $(BENCH)/bench_accuracy $(BENCH)/bench_skip \
   $(BENCH)/bench_report
-FORMATTED += tools/bench/*.h
+FORMATTED += tools/bench/*.h tools/bench_v3/*.c
 
 .PHONY: bench bench-quick bench-docs deps-bench
 deps-bench:

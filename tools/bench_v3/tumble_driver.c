@@ -1,0 +1,64 @@
+/* One run of one scene of the catalogue (demos/scenes), timed with the
+ * protocol of Box2D v3's benchmark/main.c so that tools/bench_v3.sh can put
+ * the two side by side: build, step 0 not timed, steps 1..N-1 timed in process
+ * CPU time, 60 Hz, 4 substeps. v3's sleep settings are the scenes' own
+ * (sleeping off in large_pyramid, many_pyramids and joint_grid, as v3's
+ * builders turn it off there).
+ *
+ *   bench_v3_tumble SCENE [STEPS]
+ * prints: tumble SCENE STEPS MS_PER_STEP bodies B shapes S joints J pairs P
+ * touching T awake A */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../../demos/scenes/scenes.h"
+
+/* The scenes v3 builds with sleeping off. */
+static int v3_sleeps(const char* name) {
+  return strcmp(name, "large_pyramid") != 0 && strcmp(name, "many_pyramids") != 0 && strcmp(name, "joint_grid") != 0;
+}
+
+static double cpu_seconds(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    fprintf(stderr, "usage: %s SCENE [STEPS]\n", argv[0]);
+    return 2;
+  }
+  const tb_scene* sc = tb_scene_find(argv[1]);
+  if (sc == NULL) {
+    fprintf(stderr, "%s: no scene named %s\n", argv[0], argv[1]);
+    return 2;
+  }
+  int steps = argc > 2 ? atoi(argv[2]) : sc->default_steps;
+  if (steps < 2) steps = 2;
+  tb_world_id world = tb_scene_create_world(sc);
+  sc->build(world, 1.0f);
+  if (!v3_sleeps(sc->name)) tb_world_enable_sleeping(world, false);
+  if (sc->update != NULL) sc->update(world, 0);
+  if (tb_world_step(world, 1.0f / 60.0f, 4) != TB_OK) {
+    fprintf(stderr, "%s: step failed: %s\n", argv[0], tb_last_error());
+    return 1;
+  }
+  double t0 = cpu_seconds();
+  for (int i = 1; i < steps; ++i) {
+    if (sc->update != NULL) sc->update(world, i);
+    if (tb_world_step(world, 1.0f / 60.0f, 4) != TB_OK) {
+      fprintf(stderr, "%s: step %d failed: %s\n", argv[0], i, tb_last_error());
+      return 1;
+    }
+  }
+  double ms = 1e3 * (cpu_seconds() - t0) / (double)(steps - 1);
+  tb_counts c = tb_world_get_counts(world);
+  printf("tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d\n", sc->name, steps, ms,
+         c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count, c.awake_body_count);
+  tb_destroy_world(world);
+  return 0;
+}
