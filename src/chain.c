@@ -72,11 +72,9 @@ tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
     tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->count = %d, need at least %d points", fn, n, def->is_loop ? 3 : 2);
     return null_id;
   }
-  if (!tb_value_ok(def->friction) || def->friction < 0.0f || !tb_value_ok(def->restitution) ||
-      def->restitution < 0.0f) {
-    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->friction and def->restitution must be >= 0 and finite", fn);
+  if (tb_check_non_negative(w, fn, "def->friction", def->friction) ||
+      tb_check_restitution(w, fn, "def->restitution", def->restitution))
     return null_id;
-  }
   for (int i = 0; i < n; ++i) {
     if (!tb_point_ok(def->points[i])) {
       tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->points[%d] is not finite or beyond TB_MAX_LENGTH", fn, i);

@@ -40,7 +40,7 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
   }
   if (tb_check_non_negative(w, fn, "def->density", def->density) ||
       tb_check_non_negative(w, fn, "def->friction", def->friction) ||
-      tb_check_non_negative(w, fn, "def->restitution", def->restitution) ||
+      tb_check_restitution(w, fn, "def->restitution", def->restitution) ||
       tb_check_non_negative(w, fn, "def->rolling_resistance", def->rolling_resistance))
     return null_id;
   if (!tb_value_ok(def->tangent_speed)) {
@@ -222,7 +222,7 @@ float tb_shape_get_restitution(tb_shape_id id) {
 
 tb_result tb_shape_set_restitution(tb_shape_id id, float restitution) {
   GET_SHAPE_FOR_CHANGE(id);
-  if (tb_check_non_negative(w, __func__, "restitution", restitution)) return tb_last_result();
+  if (tb_check_restitution(w, __func__, "restitution", restitution)) return tb_last_result();
   s->restitution = restitution;
   return TB_OK;
 }

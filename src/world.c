@@ -68,11 +68,7 @@ tb_world_id tb_create_world(const tb_world_def* def) {
     tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_create_world: def is NULL");
     return null_id;
   }
-  if (!tb_vector_ok(def->gravity)) {
-    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_create_world: def->gravity (%g, %g) is not finite",
-            (double)def->gravity.x, (double)def->gravity.y);
-    return null_id;
-  }
+  if (tb_check_gravity(NULL, "tb_create_world", "def->gravity", def->gravity) != TB_OK) return null_id;
   if (check_integrator(NULL, "tb_create_world", def->integrator) != TB_OK) return null_id;
   if (check_contact_tuning(NULL, "tb_create_world", def_contact_names, def->contact_hertz, def->contact_damping_ratio,
                            def->contact_push_max_velocity) != TB_OK ||
@@ -288,6 +284,7 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   double t4 = tb_clock_ms();
   for (int i = 0; i < w->awake_count; ++i) { /* shapes follow the bodies that moved */
     int index = w->awake[i];
+    tb_body_keep_in_world(tb_body_at(w, index));
     tb_body_update_proxies(w, index, tb_scale(time_step, tb_body_at(w, index)->linear_velocity));
   }
   double t5 = tb_clock_ms();
@@ -314,9 +311,7 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
 tb_result tb_world_set_gravity(tb_world_id id, tb_vec2 gravity) {
   tb_world* w = tb_world_get_unlocked(id, "tb_world_set_gravity");
   if (w == NULL) return tb_last_result();
-  if (!tb_vector_ok(gravity))
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_set_gravity: gravity (%g, %g) is not finite",
-                   (double)gravity.x, (double)gravity.y);
+  if (tb_check_gravity(w, "tb_world_set_gravity", "gravity", gravity) != TB_OK) return tb_last_result();
   w->gravity = gravity;
   return TB_OK;
 }

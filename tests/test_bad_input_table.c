@@ -206,6 +206,15 @@ START_TEST(world_settings) {
     wd.restitution_threshold = bad_non_negatives[i];
     REJECT(tb_create_world(&wd), TB_ERR_INVALID_ARGUMENT, "restitution_threshold");
   }
+  /* gravity: finite and no longer than TB_MAX_GRAVITY (7072 on both axes is 10001 m/s^2 long) */
+  const tb_vec2 bad_gravity[] = {{0, -1e6f},    {7072.0f, -7072.0f}, {NAN, 0},
+                                 {0, INFINITY}, {1e30f, 0},          {-1e30f, -1e30f}};
+  for (int i = 0; i < 6; ++i) {
+    REJECT(tb_world_set_gravity(W, bad_gravity[i]), TB_ERR_INVALID_ARGUMENT, "gravity");
+    tb_world_def wd = tb_default_world_def();
+    wd.gravity = bad_gravity[i];
+    REJECT(tb_create_world(&wd), TB_ERR_INVALID_ARGUMENT, "def->gravity");
+  }
   /* the time step and the substeps at and around their limits */
   const float bad_steps[] = {0.0f, -0.0f, -1e-30f, 1.0000001f, NAN, -NAN};
   for (int i = 0; i < 6; ++i) REJECT(tb_world_step(W, bad_steps[i], 4), TB_ERR_INVALID_ARGUMENT, "time_step");
@@ -682,6 +691,57 @@ START_TEST(body_and_shape_extras) {
     sd.tangent_speed = bad_reals[i];
     tb_circle c = {{0, 0}, 0.5f};
     REJECT(tb_create_circle_shape(A, &sd, &c), TB_ERR_INVALID_ARGUMENT, "tangent_speed");
+  }
+  /* restitution in [0, 1] (issue 23 item 7: 1e18 threw a box at 6e18 m/s) */
+  const float bad_restitution[] = {1.0001f, 2.0f, 1e18f};
+  for (int i = 0; i < 3; ++i) {
+    REJECT(tb_shape_set_restitution(BOX, bad_restitution[i]), TB_ERR_INVALID_ARGUMENT, "restitution");
+    tb_shape_def sd = tb_default_shape_def();
+    sd.restitution = bad_restitution[i];
+    tb_circle c = {{0, 0}, 0.5f};
+    REJECT(tb_create_circle_shape(A, &sd, &c), TB_ERR_INVALID_ARGUMENT, "def->restitution");
+    tb_vec2 pts[2] = {{0, 5}, {1, 5}};
+    tb_chain_def cd = tb_default_chain_def();
+    cd.points = pts;
+    cd.count = 2;
+    cd.restitution = bad_restitution[i];
+    REJECT(tb_create_chain(GROUND, &cd), TB_ERR_INVALID_ARGUMENT, "def->restitution");
+  }
+  /* angles within TB_MAX_ANGLE everywhere: a box's too (1e30 used to be taken) */
+  const float bad_angles[] = {1.1e6f, -1.0e7f, 1e30f, NAN, INFINITY};
+  for (int i = 0; i < 5; ++i) {
+    float x = bad_angles[i];
+    tb_polygon box;
+    REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){0, 0}, x, &box), TB_ERR_INVALID_ARGUMENT, "angle");
+    tb_body_def bd = tb_default_body_def();
+    bd.angle = x;
+    REJECT(tb_create_body(W, &bd), TB_ERR_INVALID_ARGUMENT, "def->angle");
+    REJECT(tb_body_set_transform(A, (tb_vec2){0, 2}, x), TB_ERR_INVALID_ARGUMENT, "angle");
+    tb_revolute_joint_def rd = tb_default_revolute_joint_def();
+    rd.body_a = A;
+    rd.body_b = B;
+    rd.reference_angle = x;
+    REJECT(tb_create_revolute_joint(W, &rd), TB_ERR_INVALID_ARGUMENT, "reference_angle");
+    rd.reference_angle = 0.0f;
+    rd.lower_angle = -fabsf(x);
+    REJECT(tb_create_revolute_joint(W, &rd), TB_ERR_INVALID_ARGUMENT, "lower_angle");
+    REJECT(tb_revolute_joint_set_limits(JR, true, -1.0f, fabsf(x)), TB_ERR_INVALID_ARGUMENT, "upper");
+    tb_prismatic_joint_def pd = tb_default_prismatic_joint_def();
+    pd.body_a = A;
+    pd.body_b = B;
+    pd.reference_angle = x;
+    REJECT(tb_create_prismatic_joint(W, &pd), TB_ERR_INVALID_ARGUMENT, "reference_angle");
+    tb_weld_joint_def wd = tb_default_weld_joint_def();
+    wd.body_a = A;
+    wd.body_b = B;
+    wd.reference_angle = x;
+    REJECT(tb_create_weld_joint(W, &wd), TB_ERR_INVALID_ARGUMENT, "reference_angle");
+    tb_motor_joint_def od = tb_default_motor_joint_def();
+    od.body_a = GROUND;
+    od.body_b = A;
+    od.angular_offset = x;
+    REJECT(tb_create_motor_joint(W, &od), TB_ERR_INVALID_ARGUMENT, "angular_offset");
+    REJECT(tb_motor_joint_set_offsets(JO, (tb_vec2){0, 0}, x), TB_ERR_INVALID_ARGUMENT, "angular_offset");
   }
   /* negative and zero sizes of every shape type */
   tb_shape_def sd = tb_default_shape_def();

@@ -1,6 +1,4 @@
 /* Broad phase to contacts: filtering, pair lifetime, events, sensors, callbacks. */
-#include <string.h>
-
 #include "test_util.h"
 
 static tb_body_id make_body(tb_world_id w, tb_body_type type, float x, float y) {
@@ -404,6 +402,29 @@ START_TEST(default_mixing_is_geometric_mean) {
 }
 END_TEST
 
+/* TB_MAX_GRAVITY is the gravity a contact holds at the default step (60 Hz,
+ * 4 substeps): a resting body sinks g / w^2 = 1e4 / (2 pi 115.2 Hz)^2 =
+ * 0.019 m, within TB_SPECULATIVE_DISTANCE, so a 5 cm box stays on a 5 cm
+ * floor. A body's gravity_scale cannot take it past that: a scale of 1e6 in a
+ * 10 m/s^2 world is clamped to TB_MAX_GRAVITY (unclamped, 1e7 m/s^2 pushed
+ * the box through the floor). */
+START_TEST(gravity_at_its_limit_is_held) {
+  const float world_gravity[2] = {TB_MAX_GRAVITY, 10.0f}, scale[2] = {1.0f, 1.0e6f};
+  for (int k = 0; k < 2; ++k) {
+    tb_world_id w = tbt_world(0.0f, -world_gravity[k]);
+    tb_shape_def sd = tb_default_shape_def();
+    tb_polygon floor;
+    tb_make_box(1.0f, 0.025f, &floor);
+    tb_create_polygon_shape(make_body(w, TB_STATIC_BODY, 0, 0), &sd, &floor);
+    tb_body_id box = tbt_box_body(w, 0.0f, 0.05f, 0.025f, 0.025f);
+    ck_assert_int_eq(tb_body_set_gravity_scale(box, scale[k]), TB_OK);
+    for (int i = 0; i < 120; ++i) ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+    ck_assert_near(tb_body_get_position(box).y, 0.05, TB_SPECULATIVE_DISTANCE);
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
 /* Pairs come and go with the fat AABBs. A step's manifolds use the positions
  * at its start, so after each step the touching contacts must be exactly the
  * circle pairs closer than the speculative distance before it (brute force). */
@@ -462,6 +483,7 @@ static Suite* contact_suite(void) {
   tcase_add_test(tc, pre_solve_set_later);
   tcase_add_test(tc, impulses_follow_points_whose_id_changed);
   tcase_add_test(tc, default_mixing_is_geometric_mean);
+  tcase_add_test(tc, gravity_at_its_limit_is_held);
   tcase_add_test(tc, touching_pairs_match_brute_force);
   suite_add_tcase(s, tc);
   return s;
