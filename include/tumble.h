@@ -83,7 +83,9 @@ typedef enum tb_result {
   TB_ERR_CAPACITY,        /* a fixed limit (e.g. number of worlds) is reached */
   TB_ERR_LOCKED,          /* a change from inside tb_world_step or a query/draw callback */
   TB_ERR_WRONG_BODY_TYPE, /* e.g. mass data on a static body */
-  TB_ERR_NUMERIC          /* a NaN appeared during the step and was contained */
+  /* the step was taken, but a NaN or an out-of-range value appeared in it (a
+   * body's state, a mix callback's result) and was contained (see the message) */
+  TB_ERR_NUMERIC
 } tb_result;
 
 /* The short name of a result code, e.g. "TB_ERR_STALE_HANDLE". */
@@ -199,7 +201,10 @@ struct tb_manifold;
  * the contact for this step (e.g. one-way platforms). Must not change the world. */
 typedef bool tb_pre_solve_fn(tb_shape_id a, tb_shape_id b, const struct tb_manifold* manifold, void* context);
 
-/* Mixes two shapes' friction or restitution into the contact's. */
+/* Mixes two shapes' friction or restitution into the contact's. A friction
+ * must come out >= 0 and at most TB_MAX_VALUE, a restitution in [0, 1]; any
+ * other result (NaN included) is not used: the contact takes the default
+ * rule and tb_world_step returns TB_ERR_NUMERIC naming the callback. */
 typedef float tb_mix_fn(float a, float b, void* context);
 
 typedef struct tb_world_def {
@@ -944,7 +949,8 @@ typedef struct tb_ray_result {
  * A ray that starts inside a shape does not hit that shape. */
 tb_result tb_world_cast_ray(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter,
                             tb_cast_fn* fn, void* context);
-/* The closest hit; .hit is false when there is none (or on error). */
+/* The closest hit; when there is none (or on error) .hit is false, .fraction
+ * 1 and the rest zero, as for a ray that hits nothing. */
 tb_ray_result tb_world_cast_ray_closest(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter);
 /* Every hit, nearest first: writes up to capacity into out and the number of hits
  * (which may exceed capacity) into *count. */
@@ -1120,8 +1126,9 @@ tb_debug_draw tb_default_debug_draw(void);
 /* Draws the world through the callbacks, which run with the world locked
  * (reads are fine; changes get TB_ERR_LOCKED). Errors: NULL draw, a null or
  * stale world, a call from inside tb_world_step or a callback (TB_ERR_LOCKED), non-finite or
- * non-positive normal_length or point_size, drawing bounds that are not finite
- * or have lower > upper (when used). The world is never changed. */
+ * non-positive normal_length or point_size, drawing bounds that are not finite,
+ * reach beyond TB_MAX_LENGTH or have lower > upper (when used), a colour
+ * component outside [0, 1] (NaN included). The world is never changed. */
 tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw);
 
 #ifdef __cplusplus

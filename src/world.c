@@ -267,6 +267,7 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   w->locked = true;
   w->begin_count = w->end_count = w->hit_count = 0;
   w->sensor_begin_count = w->sensor_end_count = 0;
+  w->bad_mix_count = 0;
   tb_profile* p = &w->profile;
   double t0 = tb_clock_ms();
   int pairs_before = w->contacts.count;
@@ -305,6 +306,11 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
                    "tb_world_step: %d bodies got a non-finite state (from a force or the force field) and were "
                    "left as they were before the step",
                    bad);
+  if (w->bad_mix_count > 0)
+    return tb_fail(w, TB_ERR_NUMERIC,
+                   "tb_world_step: the world's %s returned %g, outside its range, for %d new contacts; they use the "
+                   "default rule instead",
+                   w->bad_mix_name, (double)w->bad_mix_value, w->bad_mix_count);
   return TB_OK;
 }
 

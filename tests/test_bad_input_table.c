@@ -5,6 +5,7 @@
  * leaves tb_world_hash and the counts as they were. Also: stale and foreign
  * handles, calls into the world from inside callbacks, and a NaN from the
  * force field that must stay in its body. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -283,6 +284,16 @@ START_TEST(stale_worlds) {
 }
 END_TEST
 
+static void never_drawn_polygon(tb_transform xf, const tb_vec2* v, int n, float r, tb_color c, void* context) {
+  (void)xf, (void)v, (void)n, (void)r, (void)c, (void)context;
+  ck_abort_msg("a refused draw called the game");
+}
+
+static void never_drawn_segment(tb_vec2 p1, tb_vec2 p2, tb_color c, void* context) {
+  (void)p1, (void)p2, (void)c, (void)context;
+  ck_abort_msg("a refused draw called the game");
+}
+
 /* The debug-draw settings: every bad number of each field, and NULL. */
 START_TEST(draw_settings) {
   REJECT(tb_world_draw(W, NULL), TB_ERR_NULL_ARGUMENT, "draw");
@@ -294,8 +305,7 @@ START_TEST(draw_settings) {
     d.point_size = bad_sizes[i];
     REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "point_size");
   }
-  for (int i = 0; i < N_BAD; ++i) {
-    if (isfinite(bad_reals[i])) continue; /* a huge box is a valid (if large) view */
+  for (int i = 0; i < N_BAD; ++i) { /* 1e30 too: the world ends at TB_MAX_LENGTH */
     tb_debug_draw d = tb_default_debug_draw();
     d.use_drawing_bounds = true;
     d.drawing_bounds = (tb_aabb){{bad_reals[i], 0.0f}, {1.0f, 1.0f}};
@@ -307,6 +317,28 @@ START_TEST(draw_settings) {
   d.use_drawing_bounds = true;
   d.drawing_bounds = (tb_aabb){{0.0f, 1.0f}, {1.0f, 0.0f}}; /* lower.y > upper.y */
   REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "drawing_bounds");
+  /* every component of every colour in [0, 1]: NaN, infinite or out-of-range
+   * colours never reach the game's callbacks */
+  const char* const color_names[] = {
+      "static_body",   "kinematic_body", "awake_body", "asleep_body",   "bullet_body",       "disabled_body",  "sensor",
+      "sensor_active", "joint",          "aabb",       "contact_point", "speculative_point", "contact_normal", "text"};
+  _Static_assert(sizeof(tb_debug_colors) == 14 * sizeof(tb_color), "14 colours");
+  const float bad_components[] = {NAN, INFINITY, -INFINITY, -0.01f, 1.01f};
+  for (int c = 0; c < 14; ++c) {
+    for (int k = 0; k < 4; ++k) {
+      for (int i = 0; i < 5; ++i) {
+        d = tb_default_debug_draw();
+        d.draw_solid_polygon = never_drawn_polygon;
+        d.draw_segment = never_drawn_segment;
+        tb_color* colors = &d.colors.static_body;
+        float* part = &colors[c].r + k;
+        *part = bad_components[i];
+        char word[64];
+        snprintf(word, sizeof word, "colors.%s.%c", color_names[c], "rgba"[k]);
+        REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, word);
+      }
+    }
+  }
 }
 END_TEST
 
@@ -1258,6 +1290,26 @@ START_TEST(query_calls) {
 }
 END_TEST
 
+/* What refused getters return, as the header says: zero, and the identity
+ * for a rotation or transform; a refused closest-ray cast looks like a ray
+ * that hit nothing. */
+START_TEST(refused_getters_return_the_documented_values) {
+  tb_rot q = {0.5f, 0.5f};
+  REJECT(q = tb_body_get_rotation(DEAD_BODY), TB_ERR_STALE_HANDLE, "body");
+  ck_assert(q.c == 1.0f && q.s == 0.0f);
+  tb_transform xf = {{1, 1}, {0, 1}};
+  REJECT(xf = tb_body_get_transform(DEAD_BODY), TB_ERR_STALE_HANDLE, "body");
+  ck_assert(xf.p.x == 0.0f && xf.p.y == 0.0f && xf.q.c == 1.0f && xf.q.s == 0.0f);
+  tb_ray_result r = {{1, 1, 1}, {1, 1}, {1, 1}, 0.5f, true};
+  REJECT(r = tb_world_cast_ray_closest(W, (tb_vec2){NAN, 0}, (tb_vec2){1, 0}, tb_default_query_filter()),
+         TB_ERR_INVALID_ARGUMENT, "origin");
+  ck_assert(!r.hit && r.fraction == 1.0f && tb_shape_id_is_null(r.shape));
+  ck_assert(r.point.x == 0.0f && r.point.y == 0.0f && r.normal.x == 0.0f && r.normal.y == 0.0f);
+  tb_ray_result miss = tb_world_cast_ray_closest(W, (tb_vec2){0, 50}, (tb_vec2){1, 0}, tb_default_query_filter());
+  ck_assert(!miss.hit && miss.fraction == r.fraction);
+}
+END_TEST
+
 /* ---- calls into the world from inside callbacks ---------------------------- */
 
 typedef struct reentry {
@@ -1554,6 +1606,7 @@ static Suite* bad_input_table_suite(void) {
   tcase_add_test(tc, joint_calls);
   tcase_add_test(tc, stale_joints);
   tcase_add_test(tc, query_calls);
+  tcase_add_test(tc, refused_getters_return_the_documented_values);
   tcase_add_test(tc, changes_inside_query_callbacks);
   tcase_add_test(tc, changes_inside_step_callbacks);
   tcase_add_test(tc, changes_inside_draw_callbacks);

@@ -1,4 +1,6 @@
 /* Broad phase to contacts: filtering, pair lifetime, events, sensors, callbacks. */
+#include <string.h>
+
 #include "test_util.h"
 
 static tb_body_id make_body(tb_world_id w, tb_body_type type, float x, float y) {
@@ -402,6 +404,59 @@ START_TEST(default_mixing_is_geometric_mean) {
 }
 END_TEST
 
+static float mix_returns(float a, float b, void* ctx) {
+  (void)a, (void)b;
+  return *(const float*)ctx;
+}
+
+/* A mix callback's result outside its material's range (issue 23 item 9) is
+ * not used: the contact takes the default rule, the step that made the
+ * contact reports TB_ERR_NUMERIC naming the callback, and the bodies move on.
+ * A ball dropped 0.5 m comes to rest on the floor (a NaN restitution used to
+ * freeze it in the air). */
+START_TEST(mix_results_out_of_range_use_the_default_rule) {
+  const float bad_friction[] = {-1.0f, NAN, INFINITY, -INFINITY};
+  const float bad_restitution[] = {-1.0f, NAN, INFINITY, 1.5f};
+  for (int which = 0; which < 2; ++which) {
+    for (int i = 0; i < 4; ++i) {
+      float value = which == 0 ? bad_friction[i] : bad_restitution[i];
+      tb_world_def wd = tb_default_world_def();
+      if (which == 0)
+        wd.friction_mix = mix_returns;
+      else
+        wd.restitution_mix = mix_returns;
+      wd.mix_context = &value;
+      tb_world_id w = tb_create_world(&wd);
+      tb_shape_def sd = tb_default_shape_def();
+      tb_polygon floor;
+      tb_make_box(2.0f, 0.1f, &floor);
+      tb_create_polygon_shape(make_body(w, TB_STATIC_BODY, 0, 0), &sd, &floor);
+      sd.friction = 0.36f;
+      sd.restitution = 0.25f;
+      tb_body_id ball = make_body(w, TB_DYNAMIC_BODY, 0.0f, 0.85f);
+      add_circle(ball, &sd, 0.25f);
+      int reports = 0;
+      for (int k = 0; k < 120; ++k) {
+        tb_result r = tb_world_step(w, 1.0f / 60.0f, 4);
+        if (r == TB_OK) continue;
+        ck_assert_int_eq(r, TB_ERR_NUMERIC);
+        ck_assert_ptr_nonnull(strstr(tb_last_error(), which == 0 ? "friction_mix" : "restitution_mix"));
+        reports += 1;
+      }
+      ck_assert_int_eq(reports, 1); /* one contact, mixed once */
+      tb_contact_data cd;
+      ck_assert_int_eq(tb_body_get_contact_data(ball, &cd, 1), 1);
+      ck_assert_float_eq(cd.friction, sqrtf(0.6f * 0.36f)); /* the default rules: sqrt(fa fb) */
+      ck_assert_float_eq(cd.restitution, 0.25f);            /* and max(ra, rb) */
+      /* at rest on the floor: the centre 0.1 + 0.25 above its middle, within the contact's reach */
+      ck_assert_near(tb_body_get_position(ball).y, 0.35, TB_SPECULATIVE_DISTANCE);
+      ck_assert_near(tb_body_get_linear_velocity(ball).y, 0.0, 0.05);
+      tb_destroy_world(w);
+    }
+  }
+}
+END_TEST
+
 /* TB_MAX_GRAVITY is the gravity a contact holds at the default step (60 Hz,
  * 4 substeps): a resting body sinks g / w^2 = 1e4 / (2 pi 115.2 Hz)^2 =
  * 0.019 m, within TB_SPECULATIVE_DISTANCE, so a 5 cm box stays on a 5 cm
@@ -483,6 +538,7 @@ static Suite* contact_suite(void) {
   tcase_add_test(tc, pre_solve_set_later);
   tcase_add_test(tc, impulses_follow_points_whose_id_changed);
   tcase_add_test(tc, default_mixing_is_geometric_mean);
+  tcase_add_test(tc, mix_results_out_of_range_use_the_default_rule);
   tcase_add_test(tc, gravity_at_its_limit_is_held);
   tcase_add_test(tc, touching_pairs_match_brute_force);
   suite_add_tcase(s, tc);
