@@ -138,9 +138,12 @@ void tb_body_update_mass(tb_world* w, tb_body* b) {
         double dx = md.center.x - cx, dy = md.center.y - cy;
         inertia += md.rotational_inertia + md.mass * (dx * dx + dy * dy);
       }
-      b->mass = (float)m;
+      /* each shape's mass is within TB_MAX_VALUE, their sum and the parallel-axis
+       * terms need not be: saturate, so tb_body_set_mass_data takes what the
+       * getters report */
+      b->mass = tb_saturate(m);
       b->local_center = (tb_vec2){(float)cx, (float)cy};
-      b->inertia = (float)inertia;
+      b->inertia = tb_saturate(inertia);
     } else {
       b->mass = 1.0f; /* a dynamic body without area still needs a finite mass */
     }

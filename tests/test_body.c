@@ -314,6 +314,31 @@ START_TEST(derived_getters_stay_within_max_value) {
 }
 END_TEST
 
+/* Shapes each within TB_MAX_VALUE add up beyond it: two discs of 0.6e18 kg,
+ * 1e6 m apart (parallel axis: 1.2e18 kg x (5e5 m)^2 = 3e29 kg m^2). The body
+ * reports its mass data saturated at TB_MAX_VALUE, which
+ * tb_body_set_mass_data accepts back. */
+START_TEST(summed_mass_saturates_at_max_value) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_body_def bd = tb_default_body_def();
+  bd.type = TB_DYNAMIC_BODY;
+  tb_body_id b = tb_create_body(w, &bd);
+  tb_shape_def sd = tb_default_shape_def();
+  sd.density = 0.6e18f / 3.14159265f; /* a unit disc of 0.6e18 kg */
+  const float x[2] = {-5.0e5f, 5.0e5f};
+  for (int i = 0; i < 2; ++i) {
+    tb_circle c = {{x[i], 0.0f}, 1.0f};
+    ck_assert(tb_shape_is_valid(tb_create_circle_shape(b, &sd, &c)));
+  }
+  tb_mass_data md = tb_body_get_mass_data(b);
+  ck_assert_float_eq(md.mass, TB_MAX_VALUE);
+  ck_assert_float_eq(md.rotational_inertia, TB_MAX_VALUE);
+  ck_assert_float_eq(md.center.x, 0.0f);
+  ck_assert_int_eq(tb_body_set_mass_data(b, md), TB_OK);
+  tb_destroy_world(w);
+}
+END_TEST
+
 static Suite* body_suite(void) {
   Suite* s = suite_create("body");
   TCase* tc = tcase_create("body");
@@ -328,6 +353,7 @@ static Suite* body_suite(void) {
   tcase_add_test(tc, body_beyond_max_length);
   tcase_add_test(tc, bodies_stop_at_the_edge_of_the_world);
   tcase_add_test(tc, derived_getters_stay_within_max_value);
+  tcase_add_test(tc, summed_mass_saturates_at_max_value);
   suite_add_tcase(s, tc);
   return s;
 }
