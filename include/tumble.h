@@ -11,10 +11,17 @@
  * - Definitions are plain structs. The one rule for defaults: start every definition
  *   from its tb_default_*_def() function, then change the fields you care about.
  * - Every entry point validates its input (NULL, NaN/Inf, negative sizes, degenerate
- *   polygons, bad time steps, stale handles). A rejected call changes nothing,
- *   returns an error code (functions that create return an invalid handle, getters
- *   return zero) and leaves a readable message in tb_last_error() and, when the
- *   world is known, in tb_world_last_error().
+ *   polygons, bad time steps, stale handles, values outside the ranges documented
+ *   here). A rejected call changes nothing, returns an error code (functions that
+ *   create return an invalid handle; getters return zero, false, NULL or a null
+ *   handle, and a rotation or transform the identity, angle 0) and leaves a
+ *   readable message in tb_last_error() and, when the world is known, in
+ *   tb_world_last_error().
+ * - What the engine produces stays within its own limits: bodies stop at the
+ *   edge of the world (TB_MAX_LENGTH), and getters that combine values
+ *   (energy, momenta, point velocities, joint forces and torques) saturate at
+ *   +-TB_MAX_VALUE instead of overflowing, so a getter's value is always one
+ *   its setter accepts.
  * - Not thread-safe: use one world from one thread at a time.
  */
 #ifndef TUMBLE_H
@@ -40,11 +47,25 @@ extern "C" {
 #define TB_LINEAR_SLOP 0.005f
 
 /* Largest accepted coordinate or size (metres). Beyond it a float cannot place
- * anything to the centimetre, so larger values are rejected as bad input. */
+ * anything to the centimetre, so larger values are rejected as bad input. The
+ * world ends there: a body that moves to its edge stops with its shapes
+ * inside and loses its velocity outwards. */
 #define TB_MAX_LENGTH 1.0e7f
 /* Largest accepted magnitude of any other quantity (velocity, force, impulse,
- * torque, gravity, density, damping, mass, inertia). */
+ * torque, density, damping, mass, inertia; gravity has TB_MAX_GRAVITY). */
 #define TB_MAX_VALUE 1.0e18f
+/* Largest accepted magnitude of an angle (radians: body angles, reference
+ * angles, angle limits, offsets). A float there still resolves 0.06 rad. */
+#define TB_MAX_ANGLE 1.0e6f
+/* Largest accepted length of the world's gravity (m/s^2, about 1000 g). A
+ * resting body sinks into its support until the contact's spring carries its
+ * weight, by g / w^2 with w = 2 pi f. At the default step (60 Hz, 4 substeps)
+ * the stiffest contact has f = 0.48 x 240 Hz = 115 Hz, so 1e4 m/s^2 sinks
+ * 0.019 m: within a contact's reach (TB_SPECULATIVE_DISTANCE, 0.02 m) and less
+ * than half the thinnest object the engine is tuned for (0.05 m). Longer
+ * substeps h sink more (about g h^2 / 9). The gravity a body feels,
+ * gravity_scale times the world's, is clamped to this length too. */
+#define TB_MAX_GRAVITY 1.0e4f
 
 /* Most relax passes per substep (tb_world_def.relax_iterations). */
 #define TB_MAX_RELAX_ITERATIONS 64
@@ -63,7 +84,9 @@ typedef enum tb_result {
   TB_ERR_CAPACITY,        /* a fixed limit (e.g. number of worlds) is reached */
   TB_ERR_LOCKED,          /* a change from inside tb_world_step or a query/draw callback */
   TB_ERR_WRONG_BODY_TYPE, /* e.g. mass data on a static body */
-  TB_ERR_NUMERIC          /* a NaN appeared during the step and was contained */
+  /* the step was taken, but a NaN or an out-of-range value appeared in it (a
+   * body's state, a mix callback's result) and was contained (see the message) */
+  TB_ERR_NUMERIC
 } tb_result;
 
 /* The short name of a result code, e.g. "TB_ERR_STALE_HANDLE". */
@@ -179,11 +202,14 @@ struct tb_manifold;
  * the contact for this step (e.g. one-way platforms). Must not change the world. */
 typedef bool tb_pre_solve_fn(tb_shape_id a, tb_shape_id b, const struct tb_manifold* manifold, void* context);
 
-/* Mixes two shapes' friction or restitution into the contact's. */
+/* Mixes two shapes' friction or restitution into the contact's. A friction
+ * must come out >= 0 and at most TB_MAX_VALUE, a restitution in [0, 1]; any
+ * other result (NaN included) is not used: the contact takes the default
+ * rule and tb_world_step returns TB_ERR_NUMERIC naming the callback. */
 typedef float tb_mix_fn(float a, float b, void* context);
 
 typedef struct tb_world_def {
-  tb_vec2 gravity;                /* m/s^2, default (0, -10) */
+  tb_vec2 gravity;                /* m/s^2, default (0, -10), at most TB_MAX_GRAVITY long */
   tb_integrator integrator;       /* default midpoint: exact under constant forces */
   tb_force_field_fn* force_field; /* optional, default NULL */
   void* force_field_context;
@@ -248,6 +274,7 @@ bool tb_world_is_valid(tb_world_id world);
  * (1 to 64; 4 is a good default at 60 Hz). */
 tb_result tb_world_step(tb_world_id world, float time_step, int substeps);
 
+/* Gravity: finite, at most TB_MAX_GRAVITY long. */
 tb_result tb_world_set_gravity(tb_world_id world, tb_vec2 gravity);
 tb_vec2 tb_world_get_gravity(tb_world_id world);
 tb_result tb_world_set_integrator(tb_world_id world, tb_integrator integrator);
@@ -339,12 +366,12 @@ typedef enum tb_body_type {
 typedef struct tb_body_def {
   tb_body_type type;       /* default static */
   tb_vec2 position;        /* world position of the body origin */
-  float angle;             /* radians */
+  float angle;             /* radians, within TB_MAX_ANGLE */
   tb_vec2 linear_velocity; /* of the body origin, m/s */
   float angular_velocity;  /* rad/s */
   float linear_damping;    /* >= 0, 1/s: v <- v / (1 + h c) per substep */
   float angular_damping;   /* >= 0, 1/s */
-  float gravity_scale;     /* default 1 */
+  float gravity_scale;     /* default 1; the product with gravity is clamped to TB_MAX_GRAVITY */
   bool fixed_rotation;
   bool enabled; /* default true */
   /* A bullet is swept against dynamic bodies too, not only static ones (for
@@ -449,7 +476,7 @@ tb_vec2 tb_body_get_local_point(tb_body_id body, tb_vec2 world_point);
 tb_vec2 tb_body_get_world_vector(tb_body_id body, tb_vec2 local_vector);
 tb_vec2 tb_body_get_local_vector(tb_body_id body, tb_vec2 world_vector);
 
-/* 1/2 M V^2 + 1/2 I w^2 (J). */
+/* 1/2 M V^2 + 1/2 I w^2 (J). These three saturate at +-TB_MAX_VALUE. */
 float tb_body_get_kinetic_energy(tb_body_id body);
 /* P = M V (kg m/s). */
 tb_vec2 tb_body_get_linear_momentum(tb_body_id body);
@@ -500,7 +527,7 @@ typedef struct tb_polygon {
 tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_polygon* out);
 /* A box of half-extents hx, hy centred on the body origin. */
 tb_result tb_make_box(float hx, float hy, tb_polygon* out);
-/* A box centred at center (body-local), rotated by angle. */
+/* A box centred at center (body-local), rotated by angle (within TB_MAX_ANGLE). */
 tb_result tb_make_offset_box(float hx, float hy, tb_vec2 center, float angle, tb_polygon* out);
 /* A box with rounded corners: core half-extents hx, hy plus radius. */
 tb_result tb_make_rounded_box(float hx, float hy, float radius, tb_polygon* out);
@@ -520,7 +547,7 @@ tb_filter tb_default_filter(void);
 typedef struct tb_shape_def {
   float density;     /* kg/m^2, >= 0, default 1 */
   float friction;    /* >= 0, default 0.6 */
-  float restitution; /* >= 0, default 0 */
+  float restitution; /* in [0, 1] (1: elastic), default 0 */
   /* Rolling resistance coefficient (>= 0, default 0): a torque of up to
    * rolling_resistance * normal force * radius opposes relative rolling, where
    * radius is the rounding radius of a circle, capsule or rounded polygon
@@ -665,7 +692,7 @@ typedef struct tb_chain_def {
   int count;
   bool is_loop;
   float friction;    /* default 0.6 */
-  float restitution; /* default 0 */
+  float restitution; /* in [0, 1], default 0 */
   tb_filter filter;
   bool enable_sensor_events; /* default true */
   void* user_data;           /* given to every segment shape */
@@ -702,8 +729,9 @@ tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_t
  * soft constraints with the world's joint_hertz and joint_damping_ratio for
  * drift (see tb_world_def); springs use their own hertz and damping ratio
  * (hertz 0 means no spring). Errors: both bodies the same, bodies of different
- * worlds, non-finite numbers, lower > upper limits, negative forces, hertz or
- * damping ratios. */
+ * worlds, non-finite numbers, angles (reference angles, angle limits, angular
+ * offsets) beyond TB_MAX_ANGLE, lower > upper limits, negative forces, hertz
+ * or damping ratios. */
 typedef enum tb_joint_type {
   TB_JOINT_DISTANCE = 0,
   TB_JOINT_MOTOR,
@@ -851,7 +879,8 @@ tb_result tb_joint_set_collide_connected(tb_joint_id joint, bool collide);
 void* tb_joint_get_user_data(tb_joint_id joint);
 tb_result tb_joint_set_user_data(tb_joint_id joint, void* user_data);
 /* The force (N) and torque (N m) the joint applied to body B in the last
- * substep of the last step (its impulse over the substep). */
+ * substep of the last step (its impulse over the substep), saturated at
+ * +-TB_MAX_VALUE; the motor torque and force getters likewise. */
 tb_vec2 tb_joint_get_constraint_force(tb_joint_id joint);
 float tb_joint_get_constraint_torque(tb_joint_id joint);
 
@@ -926,7 +955,8 @@ typedef struct tb_ray_result {
  * A ray that starts inside a shape does not hit that shape. */
 tb_result tb_world_cast_ray(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter,
                             tb_cast_fn* fn, void* context);
-/* The closest hit; .hit is false when there is none (or on error). */
+/* The closest hit; when there is none (or on error) .hit is false, .fraction
+ * 1 and the rest zero, as for a ray that hits nothing. */
 tb_ray_result tb_world_cast_ray_closest(tb_world_id world, tb_vec2 origin, tb_vec2 translation, tb_query_filter filter);
 /* Every hit, nearest first: writes up to capacity into out and the number of hits
  * (which may exceed capacity) into *count. */
@@ -1102,8 +1132,9 @@ tb_debug_draw tb_default_debug_draw(void);
 /* Draws the world through the callbacks, which run with the world locked
  * (reads are fine; changes get TB_ERR_LOCKED). Errors: NULL draw, a null or
  * stale world, a call from inside tb_world_step or a callback (TB_ERR_LOCKED), non-finite or
- * non-positive normal_length or point_size, drawing bounds that are not finite
- * or have lower > upper (when used). The world is never changed. */
+ * non-positive normal_length or point_size, drawing bounds that are not finite,
+ * reach beyond TB_MAX_LENGTH or have lower > upper (when used), a colour
+ * component outside [0, 1] (NaN included). The world is never changed. */
 tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw);
 
 #ifdef __cplusplus

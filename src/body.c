@@ -34,6 +34,41 @@ void tb_body_sync_transform(tb_body* b) {
   b->transform.p = tb_sub(b->center, tb_rotate(b->transform.q, b->local_center));
 }
 
+tb_vec2 tb_body_gravity(const tb_world* w, const tb_body* b) {
+  tb_vec2 g = tb_scale(b->gravity_scale, w->gravity);
+  float length = tb_length(g); /* inf when the product overflows: then the clamp keeps g's direction */
+  if (length <= TB_MAX_GRAVITY) return g;
+  float scale = b->gravity_scale < 0.0f ? -TB_MAX_GRAVITY : TB_MAX_GRAVITY;
+  return tb_scale(scale, tb_normalize(w->gravity));
+}
+
+/* How far x lies beyond [-limit, limit], signed like x; 0 inside. */
+static float past(float x, float limit) {
+  if (x > limit) return x - limit;
+  if (x < -limit) return x + limit;
+  return 0.0f;
+}
+
+/* The larger of two overshoots on one axis. They cannot point opposite ways
+ * unless the body is as wide as the world, and then either will do. */
+static float larger(float a, float b) { return fabsf(a) > fabsf(b) ? a : b; }
+
+void tb_body_keep_in_world(tb_body* b) {
+  /* The shapes lie within max_extent of the centre. Floats near TB_MAX_LENGTH
+   * are 1 m apart: two of those spacings absorb the rounding of their boxes,
+   * so a shape that was inside stays insertable. */
+  float inner = fmaxf(TB_MAX_LENGTH - b->max_extent - 2.0f, 0.0f);
+  tb_vec2 back = {larger(past(b->center.x, inner), past(b->transform.p.x, TB_MAX_LENGTH)),
+                  larger(past(b->center.y, inner), past(b->transform.p.y, TB_MAX_LENGTH))};
+  if (back.x == 0.0f && back.y == 0.0f) return;
+  b->center = tb_sub(b->center, back);
+  b->center_residual = (tb_vec2){0.0f, 0.0f};
+  b->transform.p = tb_sub(b->transform.p, back);
+  /* the edge holds it like a wall: no speed outwards */
+  if (back.x * b->linear_velocity.x > 0.0f) b->linear_velocity.x = 0.0f;
+  if (back.y * b->linear_velocity.y > 0.0f) b->linear_velocity.y = 0.0f;
+}
+
 /* Extents about the centre of mass: the farthest surface point (rotation seen
  * as speed, for sleep and sweeps) and the thinnest half-thickness (how far the
  * body may move in a step before it could pass through something). */
@@ -103,9 +138,12 @@ void tb_body_update_mass(tb_world* w, tb_body* b) {
         double dx = md.center.x - cx, dy = md.center.y - cy;
         inertia += md.rotational_inertia + md.mass * (dx * dx + dy * dy);
       }
-      b->mass = (float)m;
+      /* each shape's mass is within TB_MAX_VALUE, their sum and the parallel-axis
+       * terms need not be: saturate, so tb_body_set_mass_data takes what the
+       * getters report */
+      b->mass = tb_saturate(m);
       b->local_center = (tb_vec2){(float)cx, (float)cy};
-      b->inertia = (float)inertia;
+      b->inertia = tb_saturate(inertia);
     } else {
       b->mass = 1.0f; /* a dynamic body without area still needs a finite mass */
     }
@@ -146,12 +184,6 @@ static tb_result check_point(tb_world* w, const char* fn, const char* name, tb_v
   return TB_OK;
 }
 
-static tb_result check_angle(tb_world* w, const char* fn, float angle) {
-  if (!isfinite(angle) || fabsf(angle) > 1.0e6f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: angle = %g must be finite and within 1e6 rad", fn, (double)angle);
-  return TB_OK;
-}
-
 tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
   const tb_body_id null_id = {0, 0, 0};
   const char* fn = "tb_create_body";
@@ -162,7 +194,8 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
     return null_id;
   }
   if (check_type(w, fn, def->type) || check_point(w, fn, "def->position", def->position) ||
-      check_angle(w, fn, def->angle) || check_vector(w, fn, "def->linear_velocity", def->linear_velocity) ||
+      tb_check_angle(w, fn, "def->angle", def->angle) ||
+      check_vector(w, fn, "def->linear_velocity", def->linear_velocity) ||
       check_value(w, fn, "def->angular_velocity", def->angular_velocity) ||
       tb_check_non_negative(w, fn, "def->linear_damping", def->linear_damping) ||
       tb_check_non_negative(w, fn, "def->angular_damping", def->angular_damping) ||
@@ -322,7 +355,8 @@ tb_transform tb_body_get_transform(tb_body_id id) {
 
 tb_result tb_body_set_transform(tb_body_id id, tb_vec2 position, float angle) {
   GET_BODY_FOR_CHANGE(id);
-  if (check_point(w, __func__, "position", position) || check_angle(w, __func__, angle)) return tb_last_result();
+  if (check_point(w, __func__, "position", position) || tb_check_angle(w, __func__, "angle", angle))
+    return tb_last_result();
   b->angle = angle;
   b->transform.q = tb_make_rot(angle);
   b->transform.p = position;
@@ -377,7 +411,9 @@ tb_result tb_body_set_angular_velocity(tb_body_id id, float omega) {
 tb_vec2 tb_body_get_point_velocity(tb_body_id id, tb_vec2 world_point) {
   GET_BODY(id, zero2);
   if (check_point(w, __func__, "world_point", world_point)) return zero2;
-  return tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(world_point, b->center)));
+  double omega = b->angular_velocity, rx = (double)world_point.x - b->center.x,
+         ry = (double)world_point.y - b->center.y;
+  return tb_saturate2(b->linear_velocity.x - omega * ry, b->linear_velocity.y + omega * rx);
 }
 
 float tb_body_get_linear_damping(tb_body_id id) {
@@ -615,19 +651,21 @@ tb_vec2 tb_body_get_local_vector(tb_body_id id, tb_vec2 v) {
  * kinematic bodies makes them zero by convention. */
 float tb_body_get_kinetic_energy(tb_body_id id) {
   GET_BODY(id, 0.0f);
-  float omega = b->angular_velocity;
-  return 0.5f * (b->mass * tb_length_sq(b->linear_velocity) + b->inertia * omega * omega);
+  double vx = b->linear_velocity.x, vy = b->linear_velocity.y, omega = b->angular_velocity;
+  return tb_saturate(0.5 * (b->mass * (vx * vx + vy * vy) + b->inertia * omega * omega));
 }
 
 tb_vec2 tb_body_get_linear_momentum(tb_body_id id) {
   GET_BODY(id, zero2);
-  return tb_scale(b->mass, b->linear_velocity);
+  return tb_saturate2((double)b->mass * b->linear_velocity.x, (double)b->mass * b->linear_velocity.y);
 }
 
 float tb_body_get_angular_momentum(tb_body_id id, tb_vec2 p) {
   GET_BODY(id, 0.0f);
   if (check_point(w, __func__, "world_point", p)) return 0.0f;
-  return b->inertia * b->angular_velocity + tb_cross(tb_sub(b->center, p), tb_scale(b->mass, b->linear_velocity));
+  double rx = (double)b->center.x - p.x, ry = (double)b->center.y - p.y;
+  double px = (double)b->mass * b->linear_velocity.x, py = (double)b->mass * b->linear_velocity.y;
+  return tb_saturate((double)b->inertia * b->angular_velocity + (rx * py - ry * px));
 }
 
 int tb_body_get_shape_count(tb_body_id id) {

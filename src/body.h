@@ -64,5 +64,12 @@ struct tb_world;
 void tb_body_update_mass(struct tb_world* world, tb_body* body);
 /* origin transform from centre of mass and angle */
 void tb_body_sync_transform(tb_body* body);
+/* The gravity the body feels: gravity_scale times the world's, no longer
+ * than TB_MAX_GRAVITY. */
+tb_vec2 tb_body_gravity(const struct tb_world* world, const tb_body* body);
+/* Keeps a body that moved inside the world: its origin and its shapes within
+ * TB_MAX_LENGTH on each axis. A body past the edge is moved back onto it and
+ * loses its velocity outwards. Call before its proxies are updated. */
+void tb_body_keep_in_world(tb_body* body);
 
 #endif

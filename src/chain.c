@@ -34,6 +34,29 @@ static void free_chain(tb_world* w, int index) {
   tb_pool_release(&w->chains, index);
 }
 
+/* Segment i of the chain as a shape, its ghost vertices from its neighbours. */
+static tb_shape segment_proto(const tb_chain_def* def, int chain, int i) {
+  int n = def->count, i0 = i - 1, i2 = i + 1, i3 = i + 2;
+  if (def->is_loop) {
+    i0 = (i0 + n) % n;
+    i2 %= n;
+    i3 %= n;
+  }
+  const tb_vec2* p = def->points;
+  tb_shape proto = {.type = TB_SHAPE_CHAIN_SEGMENT,
+                    .friction = def->friction,
+                    .restitution = def->restitution,
+                    .filter = def->filter,
+                    .enable_sensor_events = def->enable_sensor_events,
+                    .enable_contact_events = true,
+                    .chain = chain,
+                    .user_data = def->user_data};
+  proto.geom.chain_segment = (tb_chain_segment){i0 >= 0 ? p[i0] : p[i], {p[i], p[i2]}, i3 < n ? p[i3] : p[i2]};
+  return proto;
+}
+
+/* Every check and every allocation comes before the first segment is linked,
+ * so a refused chain leaves the world exactly as it was (its trees too). */
 tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
   const tb_chain_id null_id = {0, 0, 0};
   const char* fn = "tb_create_chain";
@@ -49,11 +72,9 @@ tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
     tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->count = %d, need at least %d points", fn, n, def->is_loop ? 3 : 2);
     return null_id;
   }
-  if (!tb_value_ok(def->friction) || def->friction < 0.0f || !tb_value_ok(def->restitution) ||
-      def->restitution < 0.0f) {
-    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->friction and def->restitution must be >= 0 and finite", fn);
+  if (tb_check_non_negative(w, fn, "def->friction", def->friction) ||
+      tb_check_restitution(w, fn, "def->restitution", def->restitution))
     return null_id;
-  }
   for (int i = 0; i < n; ++i) {
     if (!tb_point_ok(def->points[i])) {
       tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->points[%d] is not finite or beyond TB_MAX_LENGTH", fn, i);
@@ -65,44 +86,30 @@ tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
       return null_id;
     }
   }
+  int body = body_id.index1 - 1;
   int segments = def->is_loop ? n : n - 1;
+  for (int i = 0; i < segments; ++i) {
+    tb_shape proto = segment_proto(def, -1, i);
+    if (tb_shape_prepare(w, body, &proto, segments, fn) != TB_OK) return null_id;
+  }
   int index = tb_pool_alloc(&w->chains);
-  int* shapes = malloc((size_t)segments * sizeof *shapes);
-  if (index < 0 || shapes == NULL) {
+  int* shapes = index >= 0 ? malloc((size_t)segments * sizeof *shapes) : NULL;
+  int allocated = 0;
+  while (shapes != NULL && allocated < segments && (shapes[allocated] = tb_pool_alloc(&w->shapes)) >= 0) allocated += 1;
+  if (allocated < segments) {
+    while (allocated > 0) tb_pool_release(&w->shapes, shapes[--allocated]);
     free(shapes);
     if (index >= 0) tb_pool_release(&w->chains, index);
     tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for %d segments", fn, segments);
     return null_id;
   }
   tb_chain* c = chain_at(w, index);
-  *c = (tb_chain){body_id.index1 - 1, shapes, 0, def->is_loop};
-  const tb_vec2* p = def->points;
+  *c = (tb_chain){body, shapes, segments, def->is_loop};
   for (int i = 0; i < segments; ++i) {
-    int i0 = i - 1, i2 = i + 1, i3 = i + 2;
-    if (def->is_loop) {
-      i0 = (i0 + n) % n;
-      i2 %= n;
-      i3 %= n;
-    }
-    tb_chain_segment cs = {i0 >= 0 ? p[i0] : p[i], {p[i], p[i2]}, i3 < n ? p[i3] : p[i2]};
-    tb_shape proto = {.type = TB_SHAPE_CHAIN_SEGMENT,
-                      .friction = def->friction,
-                      .restitution = def->restitution,
-                      .filter = def->filter,
-                      .enable_sensor_events = def->enable_sensor_events,
-                      .enable_contact_events = true,
-                      .chain = index,
-                      .user_data = def->user_data};
-    proto.geom.chain_segment = cs;
-    int s = tb_shape_attach(w, c->body, &proto, fn);
-    if (s < 0) { /* undo: the world stays as it was */
-      for (int k = 0; k < c->count; ++k) tb_shape_detach(w, c->shapes[k]);
-      free_chain(w, index);
-      return null_id;
-    }
-    c->shapes[c->count++] = s;
+    tb_shape proto = segment_proto(def, index, i);
+    tb_shape_link(w, body, shapes[i], &proto);
   }
-  tb_body_update_mass(w, tb_body_at(w, c->body)); /* no mass, but the centre may move */
+  tb_body_update_mass(w, tb_body_at(w, body)); /* no mass, but the centre may move */
   return make_chain_id(w, index);
 }
 

@@ -111,12 +111,28 @@ static void unlink_edge(tb_world* w, int contact, int side) {
 
 /* ---- creation and destruction ------------------------------------------- */
 
-static float mix_friction(const tb_world* w, float a, float b) {
-  return w->friction_mix != NULL ? w->friction_mix(a, b, w->mix_context) : sqrtf(a * b);
+/* A mix callback's result outside the range of its material (NaN, negative,
+ * a friction above TB_MAX_VALUE, a restitution above 1) is not used: the
+ * contact takes the default rule, and tb_world_step reports it. */
+static float checked_mix(tb_world* w, const char* name, float value, float max, float rule) {
+  if (value >= 0.0f && value <= max) return value; /* false for NaN */
+  if (w->bad_mix_count++ == 0) {
+    w->bad_mix_value = value;
+    w->bad_mix_name = name;
+  }
+  return rule;
 }
 
-static float mix_restitution(const tb_world* w, float a, float b) {
-  return w->restitution_mix != NULL ? w->restitution_mix(a, b, w->mix_context) : (a > b ? a : b);
+static float mix_friction(tb_world* w, float a, float b) {
+  float rule = sqrtf(a * b);
+  if (w->friction_mix == NULL) return rule;
+  return checked_mix(w, "friction_mix", w->friction_mix(a, b, w->mix_context), TB_MAX_VALUE, rule);
+}
+
+static float mix_restitution(tb_world* w, float a, float b) {
+  float rule = a > b ? a : b;
+  if (w->restitution_mix == NULL) return rule;
+  return checked_mix(w, "restitution_mix", w->restitution_mix(a, b, w->mix_context), 1.0f, rule);
 }
 
 /* The lever arm of rolling resistance: the rounding radius of a shape. */

@@ -223,6 +223,36 @@ static void draw_bodies(const tb_world* w, const tb_debug_draw* d) {
 
 static bool positive_finite(float x) { return isfinite(x) && x > 0.0f; }
 
+/* Every colour component in [0, 1]: what reaches the game's callbacks is a
+ * colour a renderer can use. */
+static tb_result check_colors(tb_world* w, const char* fn, const tb_debug_colors* c) {
+  const struct {
+    const char* name;
+    tb_color color;
+  } all[] = {{"static_body", c->static_body},
+             {"kinematic_body", c->kinematic_body},
+             {"awake_body", c->awake_body},
+             {"asleep_body", c->asleep_body},
+             {"bullet_body", c->bullet_body},
+             {"disabled_body", c->disabled_body},
+             {"sensor", c->sensor},
+             {"sensor_active", c->sensor_active},
+             {"joint", c->joint},
+             {"aabb", c->aabb},
+             {"contact_point", c->contact_point},
+             {"speculative_point", c->speculative_point},
+             {"contact_normal", c->contact_normal},
+             {"text", c->text}};
+  for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) {
+    const float parts[4] = {all[i].color.r, all[i].color.g, all[i].color.b, all[i].color.a};
+    for (int k = 0; k < 4; ++k)
+      if (!(parts[k] >= 0.0f && parts[k] <= 1.0f)) /* false for NaN */
+        return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: draw->colors.%s.%c = %g must be in [0, 1]", fn, all[i].name,
+                       "rgba"[k], (double)parts[k]);
+  }
+  return TB_OK;
+}
+
 tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw) {
   const char* fn = "tb_world_draw";
   tb_world* w = tb_world_get_unlocked(world, fn);
@@ -236,11 +266,13 @@ tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw) {
                    (double)draw->point_size);
   if (draw->use_drawing_bounds) {
     tb_aabb b = draw->drawing_bounds;
-    if (!tb_vec_finite(b.lower) || !tb_vec_finite(b.upper) || b.lower.x > b.upper.x || b.lower.y > b.upper.y)
+    if (!tb_point_ok(b.lower) || !tb_point_ok(b.upper) || b.lower.x > b.upper.x || b.lower.y > b.upper.y)
       return tb_fail(w, TB_ERR_INVALID_ARGUMENT,
-                     "%s: draw->drawing_bounds must be finite with lower <= upper (got (%g, %g) to (%g, %g))", fn,
-                     (double)b.lower.x, (double)b.lower.y, (double)b.upper.x, (double)b.upper.y);
+                     "%s: draw->drawing_bounds must be finite, within TB_MAX_LENGTH, with lower <= upper (got (%g, %g) "
+                     "to (%g, %g))",
+                     fn, (double)b.lower.x, (double)b.lower.y, (double)b.upper.x, (double)b.upper.y);
   }
+  if (check_colors(w, fn, &draw->colors) != TB_OK) return tb_last_result();
   /* The callbacks run with the world locked, as a query's do: the pools are
    * being walked, so a change from inside one is refused (TB_ERR_LOCKED)
    * instead of freeing what the walk reads next. Reading stays allowed. */

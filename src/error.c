@@ -59,3 +59,21 @@ tb_result tb_check_positive(struct tb_world* w, const char* fn, const char* name
   if (isfinite(x) && fabsf(x) <= TB_MAX_VALUE && x > 0.0f) return TB_OK;
   return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and finite", fn, name, (double)x);
 }
+
+tb_result tb_check_restitution(struct tb_world* w, const char* fn, const char* name, float x) {
+  if (x >= 0.0f && x <= 1.0f) return TB_OK; /* false for NaN */
+  return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be in [0, 1]", fn, name, (double)x);
+}
+
+tb_result tb_check_angle(struct tb_world* w, const char* fn, const char* name, float x) {
+  if (isfinite(x) && fabsf(x) <= TB_MAX_ANGLE) return TB_OK;
+  return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be finite and within TB_MAX_ANGLE (1e6 rad)", fn, name,
+                 (double)x);
+}
+
+tb_result tb_check_gravity(struct tb_world* w, const char* fn, const char* name, tb_vec2 g) {
+  if (isfinite(g.x) && isfinite(g.y) && sqrtf(g.x * g.x + g.y * g.y) <= TB_MAX_GRAVITY) return TB_OK;
+  return tb_fail(w, TB_ERR_INVALID_ARGUMENT,
+                 "%s: %s = (%g, %g) must be finite and at most TB_MAX_GRAVITY (%g m/s^2) long", fn, name, (double)g.x,
+                 (double)g.y, (double)TB_MAX_GRAVITY);
+}

@@ -20,6 +20,11 @@ tb_result tb_fail(struct tb_world* world, tb_result r, const char* fmt, ...) TB_
  * finite" and return its code, or TB_OK. */
 tb_result tb_check_non_negative(struct tb_world* world, const char* fn, const char* name, float x);
 tb_result tb_check_positive(struct tb_world* world, const char* fn, const char* name, float x);
+/* The ranges of tumble.h: a restitution in [0, 1], an angle within
+ * TB_MAX_ANGLE, a gravity no longer than TB_MAX_GRAVITY (all finite). */
+tb_result tb_check_restitution(struct tb_world* world, const char* fn, const char* name, float x);
+tb_result tb_check_angle(struct tb_world* world, const char* fn, const char* name, float x);
+tb_result tb_check_gravity(struct tb_world* world, const char* fn, const char* name, tb_vec2 g);
 
 #define TB_ERROR_MESSAGE_CAPACITY 256
 

@@ -144,7 +144,7 @@ static tb_result make_box(const char* fn, float hx, float hy, tb_vec2 center, fl
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: hy = %g must be > 0 and finite", fn, (double)hy);
   if (!tb_point_ok(center))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: center is not finite or beyond TB_MAX_LENGTH", fn);
-  if (!isfinite(angle)) return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: angle is not finite", fn);
+  if (tb_check_angle(NULL, fn, "angle", angle) != TB_OK) return tb_last_result();
   tb_transform xf = {center, angle == 0.0f ? (tb_rot){1.0f, 0.0f} : tb_make_rot(angle)};
   const tb_vec2 corners[4] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
   const tb_vec2 normals[4] = {{0.0f, -1.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {-1.0f, 0.0f}};

@@ -699,9 +699,9 @@ void tb_joint_store(tb_world* w, int index, const tb_step_context* ctx) {
       torque = j->angular_impulse;
       break;
   }
-  j->force = tb_scale(inv_h, force);
-  j->torque = inv_h * torque;
-  j->motor_output = inv_h * motor;
+  j->force = tb_saturate2((double)inv_h * force.x, (double)inv_h * force.y);
+  j->torque = tb_saturate((double)inv_h * torque);
+  j->motor_output = tb_saturate((double)inv_h * motor);
 }
 
 /* ==== body joint lists ======================================================== */
@@ -968,9 +968,9 @@ tb_joint_id tb_create_distance_joint(tb_world_id world, const tb_distance_joint_
 
 static tb_result check_revolute_def(tb_world* w, const char* fn, const tb_revolute_joint_def* d) {
   TRY(check_anchors(w, fn, d->local_anchor_a, d->local_anchor_b));
-  TRY(check_real(w, fn, "def->reference_angle", d->reference_angle));
-  TRY(check_real(w, fn, "def->lower_angle", d->lower_angle));
-  TRY(check_real(w, fn, "def->upper_angle", d->upper_angle));
+  TRY(tb_check_angle(w, fn, "def->reference_angle", d->reference_angle));
+  TRY(tb_check_angle(w, fn, "def->lower_angle", d->lower_angle));
+  TRY(tb_check_angle(w, fn, "def->upper_angle", d->upper_angle));
   TRY(check_order(w, fn, "def->lower_angle", d->lower_angle, "def->upper_angle", d->upper_angle));
   TRY(tb_check_non_negative(w, fn, "def->max_motor_torque", d->max_motor_torque));
   TRY(check_real(w, fn, "def->motor_speed", d->motor_speed));
@@ -1004,7 +1004,7 @@ tb_joint_id tb_create_revolute_joint(tb_world_id world, const tb_revolute_joint_
 static tb_result check_prismatic_def(tb_world* w, const char* fn, const tb_prismatic_joint_def* d) {
   TRY(check_anchors(w, fn, d->local_anchor_a, d->local_anchor_b));
   TRY(check_axis(w, fn, "def->local_axis_a", d->local_axis_a));
-  TRY(check_real(w, fn, "def->reference_angle", d->reference_angle));
+  TRY(tb_check_angle(w, fn, "def->reference_angle", d->reference_angle));
   TRY(check_translation(w, fn, "def->lower_translation", d->lower_translation));
   TRY(check_translation(w, fn, "def->upper_translation", d->upper_translation));
   TRY(check_order(w, fn, "def->lower_translation", d->lower_translation, "def->upper_translation",
@@ -1041,7 +1041,7 @@ tb_joint_id tb_create_prismatic_joint(tb_world_id world, const tb_prismatic_join
 
 static tb_result check_weld_def(tb_world* w, const char* fn, const tb_weld_joint_def* d) {
   TRY(check_anchors(w, fn, d->local_anchor_a, d->local_anchor_b));
-  TRY(check_real(w, fn, "def->reference_angle", d->reference_angle));
+  TRY(tb_check_angle(w, fn, "def->reference_angle", d->reference_angle));
   TRY(check_spring(w, fn, "def->linear_hertz", d->linear_hertz, "def->linear_damping_ratio", d->linear_damping_ratio));
   return check_spring(w, fn, "def->angular_hertz", d->angular_hertz, "def->angular_damping_ratio",
                       d->angular_damping_ratio);
@@ -1129,7 +1129,7 @@ tb_joint_id tb_create_mouse_joint(tb_world_id world, const tb_mouse_joint_def* d
 
 static tb_result check_motor_def(tb_world* w, const char* fn, const tb_motor_joint_def* d) {
   TRY(check_point(w, fn, "def->linear_offset", d->linear_offset));
-  TRY(check_real(w, fn, "def->angular_offset", d->angular_offset));
+  TRY(tb_check_angle(w, fn, "def->angular_offset", d->angular_offset));
   TRY(tb_check_non_negative(w, fn, "def->max_force", d->max_force));
   TRY(tb_check_non_negative(w, fn, "def->max_torque", d->max_torque));
   if (isfinite(d->correction_factor) && d->correction_factor >= 0.0f && d->correction_factor <= 1.0f) return TB_OK;
@@ -1327,8 +1327,8 @@ static tb_result set_limits(tb_world* w, tb_joint* j, const char* fn, bool enabl
     TRY(check_translation(w, fn, "lower", lower));
     TRY(check_translation(w, fn, "upper", upper));
   } else {
-    TRY(check_real(w, fn, "lower", lower));
-    TRY(check_real(w, fn, "upper", upper));
+    TRY(tb_check_angle(w, fn, "lower", lower));
+    TRY(tb_check_angle(w, fn, "upper", upper));
   }
   TRY(check_order(w, fn, "lower", lower, "upper", upper));
   if (enable != j->enable_limit) j->lower_impulse = j->upper_impulse = 0.0f;
@@ -1477,7 +1477,7 @@ tb_vec2 tb_mouse_joint_get_target(tb_joint_id id) {
 tb_result tb_motor_joint_set_offsets(tb_joint_id id, tb_vec2 linear_offset, float angular_offset) {
   GET_TYPED_FOR_CHANGE(id, TB_JOINT_MOTOR);
   TRY(check_point(w, __func__, "linear_offset", linear_offset));
-  TRY(check_real(w, __func__, "angular_offset", angular_offset));
+  TRY(tb_check_angle(w, __func__, "angular_offset", angular_offset));
   j->local_anchor_a = linear_offset;
   j->reference_angle = angular_offset;
   wake_joint_bodies(w, j);

@@ -63,6 +63,13 @@ static inline bool tb_length_ok(float a) { return isfinite(a) && fabsf(a) <= TB_
 static inline bool tb_point_ok(tb_vec2 p) { return tb_length_ok(p.x) && tb_length_ok(p.y); }
 static inline bool tb_value_ok(float a) { return isfinite(a) && fabsf(a) <= TB_MAX_VALUE; }
 static inline bool tb_vector_ok(tb_vec2 v) { return tb_value_ok(v.x) && tb_value_ok(v.y); }
+/* What the engine reports stays within its own limit: x (computed in double,
+ * so the product of two accepted values cannot overflow) saturated to
+ * [-TB_MAX_VALUE, TB_MAX_VALUE]. */
+static inline float tb_saturate(double x) {
+  return x > TB_MAX_VALUE ? TB_MAX_VALUE : x < -TB_MAX_VALUE ? -TB_MAX_VALUE : (float)x;
+}
+static inline tb_vec2 tb_saturate2(double x, double y) { return (tb_vec2){tb_saturate(x), tb_saturate(y)}; }
 
 static inline tb_rot tb_make_rot(float angle) { return (tb_rot){cosf(angle), sinf(angle)}; }
 static inline tb_vec2 tb_rotate(tb_rot q, tb_vec2 v) { return (tb_vec2){q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; }

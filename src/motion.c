@@ -111,7 +111,7 @@ bool tb_integrate_free_body(tb_world* w, int index, float dt, int substeps) {
   float h = dt / (float)substeps;
   tb_body* b = tb_body_at(w, index);
   state y = {{0.0f, 0.0f}, b->angle, b->linear_velocity, b->angular_velocity};
-  body_ctx c = {w, b, tb_make_body_id(w, index), tb_scale(b->gravity_scale, w->gravity)};
+  body_ctx c = {w, b, tb_make_body_id(w, index), tb_body_gravity(w, b)};
   for (int k = 0; k < substeps; ++k) {
     double t = w->time + (double)k * h;
     switch (w->integrator) {

@@ -40,7 +40,7 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
   }
   if (tb_check_non_negative(w, fn, "def->density", def->density) ||
       tb_check_non_negative(w, fn, "def->friction", def->friction) ||
-      tb_check_non_negative(w, fn, "def->restitution", def->restitution) ||
+      tb_check_restitution(w, fn, "def->restitution", def->restitution) ||
       tb_check_non_negative(w, fn, "def->rolling_resistance", def->rolling_resistance))
     return null_id;
   if (!tb_value_ok(def->tangent_speed)) {
@@ -102,15 +102,14 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
   return tb_make_shape_id(w, index);
 }
 
-int tb_shape_attach(tb_world* w, int body_index, const tb_shape* proto, const char* fn) {
+tb_result tb_shape_prepare(tb_world* w, int body_index, const tb_shape* proto, int proxies, const char* fn) {
+  const tb_body* b = tb_body_at(w, body_index);
+  if (!b->enabled) return TB_OK;
+  return tb_broad_phase_prepare_insert(w, proto, b->transform, b->type, proxies, fn);
+}
+
+void tb_shape_link(tb_world* w, int body_index, int index, const tb_shape* proto) {
   tb_body* b = tb_body_at(w, body_index);
-  if (b->enabled && tb_broad_phase_prepare_insert(w, proto, b->transform, b->type, 1, fn) != TB_OK) return -1;
-  int index = tb_pool_alloc(&w->shapes);
-  if (index < 0) {
-    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for another shape", fn);
-    return -1;
-  }
-  b = tb_body_at(w, body_index); /* the pool may have moved */
   tb_shape* s = tb_shape_at(w, index);
   *s = *proto;
   s->body = body_index;
@@ -121,6 +120,16 @@ int tb_shape_attach(tb_world* w, int body_index, const tb_shape* proto, const ch
   b->shape_list = index;
   b->shape_count += 1;
   if (b->enabled) (void)tb_broad_phase_create_proxy(w, index); /* prepared: cannot fail */
+}
+
+int tb_shape_attach(tb_world* w, int body_index, const tb_shape* proto, const char* fn) {
+  if (tb_shape_prepare(w, body_index, proto, 1, fn) != TB_OK) return -1;
+  int index = tb_pool_alloc(&w->shapes);
+  if (index < 0) {
+    tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for another shape", fn);
+    return -1;
+  }
+  tb_shape_link(w, body_index, index, proto);
   return index;
 }
 
@@ -213,7 +222,7 @@ float tb_shape_get_restitution(tb_shape_id id) {
 
 tb_result tb_shape_set_restitution(tb_shape_id id, float restitution) {
   GET_SHAPE_FOR_CHANGE(id);
-  if (tb_check_non_negative(w, __func__, "restitution", restitution)) return tb_last_result();
+  if (tb_check_restitution(w, __func__, "restitution", restitution)) return tb_last_result();
   s->restitution = restitution;
   return TB_OK;
 }

@@ -29,8 +29,13 @@ typedef struct tb_shape {
 } tb_shape;
 
 struct tb_world;
-/* Links a filled-in shape to a body and the broad phase (mass not updated).
- * Returns its index, or -1 (error recorded, nothing changed). */
+/* Checks that proto can join the body's broad phase and reserves room for
+ * `proxies` more proxies: after TB_OK, tb_shape_link of that many cannot fail. */
+tb_result tb_shape_prepare(struct tb_world* w, int body, const tb_shape* proto, int proxies, const char* fn);
+/* Links a prepared proto into an allocated shape slot (mass not updated). */
+void tb_shape_link(struct tb_world* w, int body, int index, const tb_shape* proto);
+/* Prepares, allocates and links one shape to a body and the broad phase (mass
+ * not updated). Returns its index, or -1 (error recorded, nothing changed). */
 int tb_shape_attach(struct tb_world* w, int body, const tb_shape* proto, const char* fn);
 /* Unlinks and frees a shape: its contacts end, its proxy goes (mass not updated). */
 void tb_shape_detach(struct tb_world* w, int shape);

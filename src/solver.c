@@ -237,7 +237,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     m->flags = 0;
     if (dynamic) {
       m->flags = MOTION_DYNAMIC | (field ? MOTION_FIELD : 0);
-      m->accel = tb_mul_add(tb_scale(b->gravity_scale, w->gravity), b->inv_mass, b->force);
+      m->accel = tb_mul_add(tb_body_gravity(w, b), b->inv_mass, b->force);
       m->alpha = b->inv_inertia * b->torque;
       m->linear_damping = 1.0f / (1.0f + h * b->linear_damping);
       m->angular_damping = 1.0f / (1.0f + h * b->angular_damping);

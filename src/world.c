@@ -81,11 +81,7 @@ tb_world_id tb_create_world(const tb_world_def* def) {
     tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_create_world: def is NULL");
     return null_id;
   }
-  if (!tb_vector_ok(def->gravity)) {
-    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_create_world: def->gravity (%g, %g) is not finite",
-            (double)def->gravity.x, (double)def->gravity.y);
-    return null_id;
-  }
+  if (tb_check_gravity(NULL, "tb_create_world", "def->gravity", def->gravity) != TB_OK) return null_id;
   if (check_integrator(NULL, "tb_create_world", def->integrator) != TB_OK) return null_id;
   if (check_contact_tuning(NULL, "tb_create_world", def_contact_names, def->contact_hertz, def->contact_damping_ratio,
                            def->contact_push_max_velocity) != TB_OK ||
@@ -298,6 +294,7 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   w->locked = true;
   w->begin_count = w->end_count = w->hit_count = 0;
   w->sensor_begin_count = w->sensor_end_count = 0;
+  w->bad_mix_count = 0;
   tb_profile* p = &w->profile;
   double t0 = tb_clock_ms();
   int pairs_before = w->contacts.count;
@@ -315,6 +312,7 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   double t4 = tb_clock_ms();
   for (int i = 0; i < w->awake_count; ++i) { /* shapes follow the bodies that moved */
     int index = w->awake[i];
+    tb_body_keep_in_world(tb_body_at(w, index));
     tb_body_update_proxies(w, index, tb_scale(time_step, tb_body_at(w, index)->linear_velocity));
   }
   double t5 = tb_clock_ms();
@@ -335,15 +333,18 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
                    "tb_world_step: %d bodies got a non-finite state (from a force or the force field) and were "
                    "left as they were before the step",
                    bad);
+  if (w->bad_mix_count > 0)
+    return tb_fail(w, TB_ERR_NUMERIC,
+                   "tb_world_step: the world's %s returned %g, outside its range, for %d new contacts; they use the "
+                   "default rule instead",
+                   w->bad_mix_name, (double)w->bad_mix_value, w->bad_mix_count);
   return TB_OK;
 }
 
 tb_result tb_world_set_gravity(tb_world_id id, tb_vec2 gravity) {
   tb_world* w = tb_world_get_unlocked(id, "tb_world_set_gravity");
   if (w == NULL) return tb_last_result();
-  if (!tb_vector_ok(gravity))
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_set_gravity: gravity (%g, %g) is not finite",
-                   (double)gravity.x, (double)gravity.y);
+  if (tb_check_gravity(w, "tb_world_set_gravity", "gravity", gravity) != TB_OK) return tb_last_result();
   w->gravity = gravity;
   return TB_OK;
 }

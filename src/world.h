@@ -42,6 +42,10 @@ typedef struct tb_world {
   tb_mix_fn* friction_mix;
   tb_mix_fn* restitution_mix;
   void* mix_context;
+  /* mix results out of range in this step (the first one kept for the message) */
+  int bad_mix_count;
+  float bad_mix_value;
+  const char* bad_mix_name;
   /* solver settings (tb_world_def) */
   float contact_hertz, contact_damping_ratio, contact_push_max_velocity;
   int relax_iterations;

@@ -8,14 +8,19 @@ static tb_world_id W;
 static tb_body_id DYN, STAT, DEAD_BODY;
 static tb_shape_id BOX, DEAD_SHAPE;
 static uint64_t HASH;
+/* W's twin, built by the same calls: a test that only makes refused calls on
+ * W leaves TWIN_CHECK set, and W must then still equal its twin, also 600
+ * steps later (state the hash does not see would show there). */
+static tb_world_id TWIN;
+static bool TWIN_CHECK;
 
-static void setup(void) {
-  W = tbt_world(0.0f, -10.0f);
-  DYN = tbt_box_body(W, 0.0f, 5.0f, 0.5f, 0.5f);
+/* The scene in world w; the handles kept are those of the last call. */
+static void build(tb_world_id w) {
+  DYN = tbt_box_body(w, 0.0f, 5.0f, 0.5f, 0.5f);
   tb_body_def bd = tb_default_body_def();
-  STAT = tb_create_body(W, &bd);
+  STAT = tb_create_body(w, &bd);
   ck_assert_int_eq(tb_body_get_shapes(DYN, &BOX, 1), 1);
-  tb_body_id doomed = tbt_box_body(W, 3.0f, 5.0f, 0.5f, 0.5f);
+  tb_body_id doomed = tbt_box_body(w, 3.0f, 5.0f, 0.5f, 0.5f);
   tb_shape_id doomed_shape;
   tb_body_get_shapes(doomed, &doomed_shape, 1);
   DEAD_SHAPE = doomed_shape;
@@ -23,11 +28,35 @@ static void setup(void) {
   DEAD_BODY = doomed;
   tb_destroy_body(doomed);
   tb_body_apply_force_to_center(DYN, (tb_vec2){1.0f, 2.0f}); /* pending force is state too */
-  tb_world_step(W, 1.0f / 60.0f, 4);
-  HASH = tb_world_hash(W);
+  tb_world_step(w, 1.0f / 60.0f, 4);
 }
 
-static void teardown(void) { tb_destroy_world(W); }
+static void setup(void) {
+  W = tbt_world(0.0f, -10.0f);
+  TWIN = tbt_world(0.0f, -10.0f);
+  build(TWIN);
+  build(W);
+  HASH = tb_world_hash(W);
+  TWIN_CHECK = true;
+}
+
+/* W equals its twin now and 600 steps later (a test that goes on to change
+ * W on purpose calls this first). */
+static void check_twin(void) {
+  TWIN_CHECK = false;
+  ck_assert_msg(tb_world_hash(W) == tb_world_hash(TWIN), "the refused calls changed the world");
+  for (int i = 0; i < 600; ++i) {
+    tb_world_step(W, 1.0f / 60.0f, 4);
+    tb_world_step(TWIN, 1.0f / 60.0f, 4);
+  }
+  ck_assert_msg(tb_world_hash(W) == tb_world_hash(TWIN), "the refused calls changed the world's later steps");
+}
+
+static void teardown(void) {
+  if (TWIN_CHECK && tb_world_is_valid(W)) check_twin();
+  tb_destroy_world(TWIN);
+  tb_destroy_world(W);
+}
 
 /* What a call returned when it returns a tb_result, else `code`: _Generic
  * evaluates only the branch it picks, so the call runs once either way. */
@@ -172,6 +201,7 @@ START_TEST(body_calls) {
   REJECT(tb_body_set_mass_data(STAT, ((tb_mass_data){1.0f, {0, 0}, 1.0f})), TB_ERR_WRONG_BODY_TYPE, "dynamic");
   REJECT(tb_body_set_type(DYN, (tb_body_type)3), TB_ERR_INVALID_ARGUMENT, "type");
   /* an impulse whose result overflows TB_MAX_VALUE is refused whole */
+  check_twin();
   tb_body_id light = tbt_box_body(W, 7.0f, 0.0f, 0.01f, 0.01f); /* 4e-4 kg */
   HASH = tb_world_hash(W);
   REJECT(tb_body_apply_linear_impulse_to_center(light, ((tb_vec2){1e18f, 0.0f})), TB_ERR_INVALID_ARGUMENT, "overflow");
@@ -349,6 +379,7 @@ START_TEST(shape_calls) {
   tb_polygon p;
   /* every geometry getter with a NULL out, on a shape of its own type */
   tb_shape_def sd = tb_default_shape_def();
+  check_twin();
   tb_shape_id circle = tb_create_circle_shape(DYN, &sd, &(tb_circle){{0, 0}, 0.25f});
   tb_shape_id capsule = tb_create_capsule_shape(DYN, &sd, &(tb_capsule){{0, 0}, {0.5f, 0}, 0.25f});
   tb_shape_id segment = tb_create_segment_shape(DYN, &sd, &(tb_segment){{0, 0}, {0.5f, 0}});
@@ -386,6 +417,7 @@ END_TEST
 /* A stale handle whose slot was reused by a new object stays stale. */
 START_TEST(reused_slots) {
   tb_body_id fresh = tbt_box_body(W, 9.0f, 9.0f, 0.5f, 0.5f);
+  tbt_box_body(TWIN, 9.0f, 9.0f, 0.5f, 0.5f);       /* the twin too: it stays W's twin */
   ck_assert_int_eq(fresh.index1, DEAD_BODY.index1); /* the freed slot came back */
   ck_assert(!tb_body_is_valid(DEAD_BODY));
   uint64_t h = tb_world_hash(W);

@@ -5,12 +5,19 @@
  * leaves tb_world_hash and the counts as they were. Also: stale and foreign
  * handles, calls into the world from inside callbacks, and a NaN from the
  * force field that must stay in its body. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "test_util.h"
 
 static tb_world_id W, OTHER;
+/* W's twin: built by the same calls. A test that only makes refused calls on W
+ * leaves TWIN_CHECK set, and teardown then holds W to its twin, also after
+ * 600 more steps, so a refusal that changed anything the hash does not see
+ * shows up too. */
+static tb_world_id TWIN;
+static bool TWIN_CHECK;
 static tb_body_id GROUND, A, B, C, FOREIGN_BODY, DEAD_BODY;
 static tb_shape_id BOX, CHAIN_SEG;
 static tb_chain_id CHAIN, DEAD_CHAIN;
@@ -23,11 +30,11 @@ static void snapshot(void) {
   COUNTS = tb_world_get_counts(W);
 }
 
-static void setup(void) {
-  W = tbt_world(0.0f, -10.0f);
-  OTHER = tbt_world(0.0f, -10.0f);
+/* The scene, in world w (bodies of another world go to OTHER); the handles
+ * kept are those of the last call. */
+static void build(tb_world_id w) {
   tb_body_def bd = tb_default_body_def();
-  GROUND = tb_create_body(W, &bd);
+  GROUND = tb_create_body(w, &bd);
   const tb_vec2 ground_points[4] = {{-20, 0}, {-5, 0}, {5, 0}, {20, 0}};
   tb_chain_def cd = tb_default_chain_def();
   cd.points = ground_points;
@@ -37,54 +44,77 @@ static void setup(void) {
   ck_assert_int_eq(tb_chain_get_segments(CHAIN, &CHAIN_SEG, 1), 1);
   DEAD_CHAIN = tb_create_chain(GROUND, &cd);
   ck_assert_int_eq(tb_destroy_chain(DEAD_CHAIN), TB_OK);
-  A = tbt_box_body(W, 0.0f, 2.0f, 0.5f, 0.5f);
-  B = tbt_box_body(W, 2.0f, 2.0f, 0.5f, 0.5f);
-  C = tbt_box_body(W, 4.0f, 0.45f, 0.5f, 0.5f); /* resting on the chain: a contact */
+  A = tbt_box_body(w, 0.0f, 2.0f, 0.5f, 0.5f);
+  B = tbt_box_body(w, 2.0f, 2.0f, 0.5f, 0.5f);
+  C = tbt_box_body(w, 4.0f, 0.45f, 0.5f, 0.5f); /* resting on the chain: a contact */
   ck_assert_int_eq(tb_body_get_shapes(A, &BOX, 1), 1);
-  DEAD_BODY = tbt_box_body(W, 9.0f, 2.0f, 0.5f, 0.5f);
+  DEAD_BODY = tbt_box_body(w, 9.0f, 2.0f, 0.5f, 0.5f);
   FOREIGN_BODY = tbt_box_body(OTHER, 0.0f, 2.0f, 0.5f, 0.5f);
 
   tb_distance_joint_def dd = tb_default_distance_joint_def();
   dd.body_a = A;
   dd.body_b = B;
   dd.length = 2.0f;
-  JD = tb_create_distance_joint(W, &dd);
+  JD = tb_create_distance_joint(w, &dd);
   tb_revolute_joint_def rd = tb_default_revolute_joint_def();
   rd.body_a = A;
   rd.body_b = B;
-  JR = tb_create_revolute_joint(W, &rd);
+  JR = tb_create_revolute_joint(w, &rd);
   tb_prismatic_joint_def pd = tb_default_prismatic_joint_def();
   pd.body_a = A;
   pd.body_b = B;
-  JP = tb_create_prismatic_joint(W, &pd);
+  JP = tb_create_prismatic_joint(w, &pd);
   tb_weld_joint_def wd = tb_default_weld_joint_def();
   wd.body_a = B;
   wd.body_b = C;
-  JW = tb_create_weld_joint(W, &wd);
+  JW = tb_create_weld_joint(w, &wd);
   tb_wheel_joint_def hd = tb_default_wheel_joint_def();
   hd.body_a = GROUND;
   hd.body_b = C;
-  JH = tb_create_wheel_joint(W, &hd);
+  JH = tb_create_wheel_joint(w, &hd);
   tb_mouse_joint_def md = tb_default_mouse_joint_def();
   md.body_a = GROUND;
   md.body_b = A;
   md.target = (tb_vec2){0.0f, 2.0f};
-  JM = tb_create_mouse_joint(W, &md);
+  JM = tb_create_mouse_joint(w, &md);
   tb_motor_joint_def od = tb_default_motor_joint_def();
   od.body_a = GROUND;
   od.body_b = B;
-  JO = tb_create_motor_joint(W, &od);
-  DEAD_JOINT = tb_create_revolute_joint(W, &rd);
+  JO = tb_create_motor_joint(w, &od);
+  DEAD_JOINT = tb_create_revolute_joint(w, &rd);
   const tb_joint_id all[] = {JD, JR, JP, JW, JH, JM, JO, DEAD_JOINT};
   for (int i = 0; i < 8; ++i) ck_assert(tb_joint_is_valid(all[i]));
   ck_assert_int_eq(tb_destroy_joint(DEAD_JOINT), TB_OK);
   ck_assert_int_eq(tb_destroy_body(DEAD_BODY), TB_OK);
   tb_body_apply_force_to_center(A, (tb_vec2){1.0f, 2.0f});
-  ck_assert_int_eq(tb_world_step(W, 1.0f / 60.0f, 4), TB_OK);
+  ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+}
+
+static void setup(void) {
+  W = tbt_world(0.0f, -10.0f);
+  OTHER = tbt_world(0.0f, -10.0f);
+  TWIN = tbt_world(0.0f, -10.0f);
+  build(TWIN);
+  build(W);
   snapshot();
+  TWIN_CHECK = true;
+}
+
+/* W still equals its twin, and does after 600 steps of both (a test that
+ * goes on to change W on purpose calls this first). */
+static void check_twin(void) {
+  TWIN_CHECK = false;
+  ck_assert_msg(tb_world_hash(W) == tb_world_hash(TWIN), "the refused calls changed the world");
+  for (int i = 0; i < 600; ++i) {
+    tb_world_step(W, 1.0f / 60.0f, 4);
+    tb_world_step(TWIN, 1.0f / 60.0f, 4);
+  }
+  ck_assert_msg(tb_world_hash(W) == tb_world_hash(TWIN), "the refused calls changed the world's later steps");
 }
 
 static void teardown(void) {
+  if (TWIN_CHECK) check_twin();
+  tb_destroy_world(TWIN);
   tb_destroy_world(W);
   if (tb_world_is_valid(OTHER)) tb_destroy_world(OTHER);
 }
@@ -177,6 +207,15 @@ START_TEST(world_settings) {
     wd.restitution_threshold = bad_non_negatives[i];
     REJECT(tb_create_world(&wd), TB_ERR_INVALID_ARGUMENT, "restitution_threshold");
   }
+  /* gravity: finite and no longer than TB_MAX_GRAVITY (7072 on both axes is 10001 m/s^2 long) */
+  const tb_vec2 bad_gravity[] = {{0, -1e6f},    {7072.0f, -7072.0f}, {NAN, 0},
+                                 {0, INFINITY}, {1e30f, 0},          {-1e30f, -1e30f}};
+  for (int i = 0; i < 6; ++i) {
+    REJECT(tb_world_set_gravity(W, bad_gravity[i]), TB_ERR_INVALID_ARGUMENT, "gravity");
+    tb_world_def wd = tb_default_world_def();
+    wd.gravity = bad_gravity[i];
+    REJECT(tb_create_world(&wd), TB_ERR_INVALID_ARGUMENT, "def->gravity");
+  }
   /* the time step and the substeps at and around their limits */
   const float bad_steps[] = {0.0f, -0.0f, -1e-30f, 1.0000001f, NAN, -NAN};
   for (int i = 0; i < 6; ++i) REJECT(tb_world_step(W, bad_steps[i], 4), TB_ERR_INVALID_ARGUMENT, "time_step");
@@ -245,6 +284,16 @@ START_TEST(stale_worlds) {
 }
 END_TEST
 
+static void never_drawn_polygon(tb_transform xf, const tb_vec2* v, int n, float r, tb_color c, void* context) {
+  (void)xf, (void)v, (void)n, (void)r, (void)c, (void)context;
+  ck_abort_msg("a refused draw called the game");
+}
+
+static void never_drawn_segment(tb_vec2 p1, tb_vec2 p2, tb_color c, void* context) {
+  (void)p1, (void)p2, (void)c, (void)context;
+  ck_abort_msg("a refused draw called the game");
+}
+
 /* The debug-draw settings: every bad number of each field, and NULL. */
 START_TEST(draw_settings) {
   REJECT(tb_world_draw(W, NULL), TB_ERR_NULL_ARGUMENT, "draw");
@@ -256,8 +305,7 @@ START_TEST(draw_settings) {
     d.point_size = bad_sizes[i];
     REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "point_size");
   }
-  for (int i = 0; i < N_BAD; ++i) {
-    if (isfinite(bad_reals[i])) continue; /* a huge box is a valid (if large) view */
+  for (int i = 0; i < N_BAD; ++i) { /* 1e30 too: the world ends at TB_MAX_LENGTH */
     tb_debug_draw d = tb_default_debug_draw();
     d.use_drawing_bounds = true;
     d.drawing_bounds = (tb_aabb){{bad_reals[i], 0.0f}, {1.0f, 1.0f}};
@@ -269,6 +317,28 @@ START_TEST(draw_settings) {
   d.use_drawing_bounds = true;
   d.drawing_bounds = (tb_aabb){{0.0f, 1.0f}, {1.0f, 0.0f}}; /* lower.y > upper.y */
   REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, "drawing_bounds");
+  /* every component of every colour in [0, 1]: NaN, infinite or out-of-range
+   * colours never reach the game's callbacks */
+  const char* const color_names[] = {
+      "static_body",   "kinematic_body", "awake_body", "asleep_body",   "bullet_body",       "disabled_body",  "sensor",
+      "sensor_active", "joint",          "aabb",       "contact_point", "speculative_point", "contact_normal", "text"};
+  _Static_assert(sizeof(tb_debug_colors) == 14 * sizeof(tb_color), "14 colours");
+  const float bad_components[] = {NAN, INFINITY, -INFINITY, -0.01f, 1.01f};
+  for (int c = 0; c < 14; ++c) {
+    for (int k = 0; k < 4; ++k) {
+      for (int i = 0; i < 5; ++i) {
+        d = tb_default_debug_draw();
+        d.draw_solid_polygon = never_drawn_polygon;
+        d.draw_segment = never_drawn_segment;
+        tb_color* colors = &d.colors.static_body;
+        float* part = &colors[c].r + k;
+        *part = bad_components[i];
+        char word[64];
+        snprintf(word, sizeof word, "colors.%s.%c", color_names[c], "rgba"[k]);
+        REJECT(tb_world_draw(W, &d), TB_ERR_INVALID_ARGUMENT, word);
+      }
+    }
+  }
 }
 END_TEST
 
@@ -413,6 +483,7 @@ START_TEST(hand_made_polygon_table) {
   tb_polygon big = box;
   big.count = -1;
   REJECT(tb_create_polygon_shape(A, &sd, &big), TB_ERR_DEGENERATE_POLYGON, "count");
+  check_twin();
   /* the real ones are accepted (and tb_make_polygon's output is never refused) */
   ck_assert(!tb_shape_id_is_null(tb_create_polygon_shape(A, &sd, &pentagon)));
 }
@@ -653,6 +724,57 @@ START_TEST(body_and_shape_extras) {
     tb_circle c = {{0, 0}, 0.5f};
     REJECT(tb_create_circle_shape(A, &sd, &c), TB_ERR_INVALID_ARGUMENT, "tangent_speed");
   }
+  /* restitution in [0, 1] (issue 23 item 7: 1e18 threw a box at 6e18 m/s) */
+  const float bad_restitution[] = {1.0001f, 2.0f, 1e18f};
+  for (int i = 0; i < 3; ++i) {
+    REJECT(tb_shape_set_restitution(BOX, bad_restitution[i]), TB_ERR_INVALID_ARGUMENT, "restitution");
+    tb_shape_def sd = tb_default_shape_def();
+    sd.restitution = bad_restitution[i];
+    tb_circle c = {{0, 0}, 0.5f};
+    REJECT(tb_create_circle_shape(A, &sd, &c), TB_ERR_INVALID_ARGUMENT, "def->restitution");
+    tb_vec2 pts[2] = {{0, 5}, {1, 5}};
+    tb_chain_def cd = tb_default_chain_def();
+    cd.points = pts;
+    cd.count = 2;
+    cd.restitution = bad_restitution[i];
+    REJECT(tb_create_chain(GROUND, &cd), TB_ERR_INVALID_ARGUMENT, "def->restitution");
+  }
+  /* angles within TB_MAX_ANGLE everywhere: a box's too (1e30 used to be taken) */
+  const float bad_angles[] = {1.1e6f, -1.0e7f, 1e30f, NAN, INFINITY};
+  for (int i = 0; i < 5; ++i) {
+    float x = bad_angles[i];
+    tb_polygon box;
+    REJECT(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){0, 0}, x, &box), TB_ERR_INVALID_ARGUMENT, "angle");
+    tb_body_def bd = tb_default_body_def();
+    bd.angle = x;
+    REJECT(tb_create_body(W, &bd), TB_ERR_INVALID_ARGUMENT, "def->angle");
+    REJECT(tb_body_set_transform(A, (tb_vec2){0, 2}, x), TB_ERR_INVALID_ARGUMENT, "angle");
+    tb_revolute_joint_def rd = tb_default_revolute_joint_def();
+    rd.body_a = A;
+    rd.body_b = B;
+    rd.reference_angle = x;
+    REJECT(tb_create_revolute_joint(W, &rd), TB_ERR_INVALID_ARGUMENT, "reference_angle");
+    rd.reference_angle = 0.0f;
+    rd.lower_angle = -fabsf(x);
+    REJECT(tb_create_revolute_joint(W, &rd), TB_ERR_INVALID_ARGUMENT, "lower_angle");
+    REJECT(tb_revolute_joint_set_limits(JR, true, -1.0f, fabsf(x)), TB_ERR_INVALID_ARGUMENT, "upper");
+    tb_prismatic_joint_def pd = tb_default_prismatic_joint_def();
+    pd.body_a = A;
+    pd.body_b = B;
+    pd.reference_angle = x;
+    REJECT(tb_create_prismatic_joint(W, &pd), TB_ERR_INVALID_ARGUMENT, "reference_angle");
+    tb_weld_joint_def wd = tb_default_weld_joint_def();
+    wd.body_a = A;
+    wd.body_b = B;
+    wd.reference_angle = x;
+    REJECT(tb_create_weld_joint(W, &wd), TB_ERR_INVALID_ARGUMENT, "reference_angle");
+    tb_motor_joint_def od = tb_default_motor_joint_def();
+    od.body_a = GROUND;
+    od.body_b = A;
+    od.angular_offset = x;
+    REJECT(tb_create_motor_joint(W, &od), TB_ERR_INVALID_ARGUMENT, "angular_offset");
+    REJECT(tb_motor_joint_set_offsets(JO, (tb_vec2){0, 0}, x), TB_ERR_INVALID_ARGUMENT, "angular_offset");
+  }
   /* negative and zero sizes of every shape type */
   tb_shape_def sd = tb_default_shape_def();
   for (int i = 0; i < N_BAD_SIZES; ++i) {
@@ -747,6 +869,80 @@ START_TEST(chain_calls) {
     REJECT(tb_chain_get_segment_count(stale[i]), TB_ERR_STALE_HANDLE, "chain");
     REJECT(tb_chain_get_segments(stale[i], out, 2), TB_ERR_STALE_HANDLE, "chain");
   }
+}
+END_TEST
+
+/* A static body near the edge of the world with a chain and boxes resting on
+ * it, stepped for half a second: the world of issue 23, item 4. */
+static tb_body_id edge_world(tb_world_id w) {
+  tb_body_def bd = tb_default_body_def();
+  bd.position = (tb_vec2){TB_MAX_LENGTH - 100.0f, 0.0f};
+  tb_body_id ground = tb_create_body(w, &bd);
+  tb_vec2 points[12];
+  for (int i = 0; i < 12; ++i) points[i] = (tb_vec2){5.0f * (float)i, 0.5f * (float)(i % 3)};
+  tb_chain_def cd = tb_default_chain_def();
+  cd.points = points;
+  cd.count = 12;
+  ck_assert(tb_chain_is_valid(tb_create_chain(ground, &cd)));
+  for (int i = 0; i < 5; ++i) tbt_box_body(w, TB_MAX_LENGTH - 90.0f + 6.0f * (float)i, 3.0f, 0.5f, 0.5f);
+  for (int i = 0; i < 30; ++i) ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+  return ground;
+}
+
+/* Every creator that could put something beyond TB_MAX_LENGTH on a body at
+ * the edge is refused before it changes anything: a chain whose last segment
+ * reaches beyond (its first seven fit), a shape of each type, a type change
+ * and re-enabling. The world keeps its hash, and its twin that never got
+ * these calls still equals it 600 steps later. */
+START_TEST(refusals_at_the_edge_of_the_world) {
+  tb_world_id twin = tbt_world(0.0f, -10.0f);
+  edge_world(twin);
+  tb_world_id keep = W;
+  W = tbt_world(0.0f, -10.0f);
+  tb_body_id ground = edge_world(W);
+  snapshot();
+  tb_vec2 points[8];
+  for (int i = 0; i < 8; ++i) points[i] = (tb_vec2){7.0f * (float)i, 1.0f + (float)i};
+  points[7].x = 300.0f; /* 200 m beyond the edge */
+  tb_chain_def cd = tb_default_chain_def();
+  cd.points = points;
+  cd.count = 8;
+  REJECT(tb_create_chain(ground, &cd), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  cd.is_loop = true;
+  REJECT(tb_create_chain(ground, &cd), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  tb_shape_def sd = tb_default_shape_def();
+  tb_circle circle = {{300.0f, 0.0f}, 1.0f};
+  REJECT(tb_create_circle_shape(ground, &sd, &circle), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  tb_capsule capsule = {{0.0f, 0.0f}, {300.0f, 0.0f}, 1.0f};
+  REJECT(tb_create_capsule_shape(ground, &sd, &capsule), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  tb_segment segment = {{0.0f, 0.0f}, {300.0f, 0.0f}};
+  REJECT(tb_create_segment_shape(ground, &sd, &segment), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  tb_polygon box;
+  ck_assert_int_eq(tb_make_offset_box(1.0f, 1.0f, (tb_vec2){300.0f, 0.0f}, 0.0f, &box), TB_OK);
+  REJECT(tb_create_polygon_shape(ground, &sd, &box), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  /* bodies placed with their boxes across the edge cannot enter a tree anew */
+  tb_body_id across[2], disabled[2];
+  const tb_world_id worlds[2] = {twin, W};
+  for (int k = 0; k < 2; ++k) {
+    across[k] = tbt_box_body(worlds[k], 0.0f, 0.0f, 2.0f, 2.0f); /* floats are 1 m apart there: reach 2 m beyond */
+    ck_assert_int_eq(tb_body_set_transform(across[k], (tb_vec2){TB_MAX_LENGTH, 50.0f}, 0.0f), TB_OK);
+    disabled[k] = tbt_box_body(worlds[k], 0.0f, 0.0f, 2.0f, 2.0f);
+    ck_assert_int_eq(tb_body_set_transform(disabled[k], (tb_vec2){TB_MAX_LENGTH, -50.0f}, 0.0f), TB_OK);
+    ck_assert_int_eq(tb_body_set_enabled(disabled[k], false), TB_OK);
+  }
+  snapshot();
+  REJECT(tb_body_set_enabled(disabled[1], true), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  REJECT(tb_body_set_type(across[1], TB_KINEMATIC_BODY), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  ck_assert_uint_eq(tb_world_hash(W), tb_world_hash(twin));
+  for (int i = 0; i < 600; ++i) {
+    tb_world_step(W, 1.0f / 60.0f, 4);
+    tb_world_step(twin, 1.0f / 60.0f, 4);
+  }
+  ck_assert_uint_eq(tb_world_hash(W), tb_world_hash(twin));
+  tb_destroy_world(twin);
+  tb_destroy_world(W);
+  W = keep;
+  snapshot();
 }
 END_TEST
 
@@ -1094,6 +1290,26 @@ START_TEST(query_calls) {
 }
 END_TEST
 
+/* What refused getters return, as the header says: zero, and the identity
+ * for a rotation or transform; a refused closest-ray cast looks like a ray
+ * that hit nothing. */
+START_TEST(refused_getters_return_the_documented_values) {
+  tb_rot q = {0.5f, 0.5f};
+  REJECT(q = tb_body_get_rotation(DEAD_BODY), TB_ERR_STALE_HANDLE, "body");
+  ck_assert(q.c == 1.0f && q.s == 0.0f);
+  tb_transform xf = {{1, 1}, {0, 1}};
+  REJECT(xf = tb_body_get_transform(DEAD_BODY), TB_ERR_STALE_HANDLE, "body");
+  ck_assert(xf.p.x == 0.0f && xf.p.y == 0.0f && xf.q.c == 1.0f && xf.q.s == 0.0f);
+  tb_ray_result r = {{1, 1, 1}, {1, 1}, {1, 1}, 0.5f, true};
+  REJECT(r = tb_world_cast_ray_closest(W, (tb_vec2){NAN, 0}, (tb_vec2){1, 0}, tb_default_query_filter()),
+         TB_ERR_INVALID_ARGUMENT, "origin");
+  ck_assert(!r.hit && r.fraction == 1.0f && tb_shape_id_is_null(r.shape));
+  ck_assert(r.point.x == 0.0f && r.point.y == 0.0f && r.normal.x == 0.0f && r.normal.y == 0.0f);
+  tb_ray_result miss = tb_world_cast_ray_closest(W, (tb_vec2){0, 50}, (tb_vec2){1, 0}, tb_default_query_filter());
+  ck_assert(!miss.hit && miss.fraction == r.fraction);
+}
+END_TEST
+
 /* ---- calls into the world from inside callbacks ---------------------------- */
 
 typedef struct reentry {
@@ -1177,6 +1393,7 @@ START_TEST(changes_inside_query_callbacks) {
       TB_OK);
   assert_all_locked(&r);
   assert_unchanged("query callbacks");
+  check_twin();
   /* and the world is usable again afterwards */
   ck_assert_int_eq(tb_body_set_linear_velocity(A, (tb_vec2){0.5f, 0}), TB_OK);
   ck_assert_int_eq(tb_world_step(W, 1.0f / 60.0f, 4), TB_OK);
@@ -1271,6 +1488,7 @@ START_TEST(changes_inside_draw_callbacks) {
   ck_assert_int_eq(tb_world_draw(W, &d), TB_OK);
   assert_all_locked(&draw_reentry);
   assert_unchanged("draw callbacks");
+  check_twin();
   /* and the world is unlocked again afterwards */
   ck_assert_int_eq(tb_body_set_linear_velocity(A, (tb_vec2){0.5f, 0}), TB_OK);
   ck_assert_int_eq(tb_world_step(W, 1.0f / 60.0f, 4), TB_OK);
@@ -1383,10 +1601,12 @@ static Suite* bad_input_table_suite(void) {
   tcase_add_test(tc, mass_and_collide_functions);
   tcase_add_test(tc, body_and_shape_extras);
   tcase_add_test(tc, chain_calls);
+  tcase_add_test(tc, refusals_at_the_edge_of_the_world);
   tcase_add_test(tc, joint_creation);
   tcase_add_test(tc, joint_calls);
   tcase_add_test(tc, stale_joints);
   tcase_add_test(tc, query_calls);
+  tcase_add_test(tc, refused_getters_return_the_documented_values);
   tcase_add_test(tc, changes_inside_query_callbacks);
   tcase_add_test(tc, changes_inside_step_callbacks);
   tcase_add_test(tc, changes_inside_draw_callbacks);

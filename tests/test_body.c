@@ -219,16 +219,14 @@ START_TEST(filter_change_refinds_pairs) {
 }
 END_TEST
 
-/* A body that flew beyond TB_MAX_LENGTH keeps its last broad-phase box. A
- * change that must insert its shapes anew is refused with a message that says
- * why, and leaves the world as it was; a filter change needs no new box. */
+/* A body placed on the edge of the world (its origin at TB_MAX_LENGTH) has a
+ * box that reaches beyond it. A change that must insert its shapes anew is
+ * refused with a message that says why, and leaves the world as it was; a
+ * filter change needs no new box. */
 START_TEST(body_beyond_max_length) {
   tb_world_id w = tbt_world(0.0f, 0.0f);
-  ck_assert_int_eq(tb_world_set_maximum_linear_speed(w, 1.0e6f), TB_OK);
-  tb_body_id b = tbt_box_body(w, 0.999e7f, 0.0f, 0.5f, 0.5f);
-  ck_assert_int_eq(tb_body_set_linear_velocity(b, (tb_vec2){1.0e6f, 0.0f}), TB_OK);
-  tb_world_step(w, 1.0f / 60.0f, 4);
-  ck_assert_float_gt(tb_body_get_position(b).x, TB_MAX_LENGTH);
+  tb_body_id b = tbt_box_body(w, 0.0f, 0.0f, 2.0f, 2.0f); /* floats there are 1 m apart: reach 2 m beyond */
+  ck_assert_int_eq(tb_body_set_transform(b, (tb_vec2){TB_MAX_LENGTH, 0.0f}, 0.0f), TB_OK);
   tb_shape_id s;
   ck_assert_int_eq(tb_body_get_shapes(b, &s, 1), 1);
   ck_assert_int_eq(tb_shape_set_filter(s, tb_default_filter()), TB_OK);
@@ -238,7 +236,7 @@ START_TEST(body_beyond_max_length) {
   ck_assert_uint_eq(tb_world_hash(w), before);
   ck_assert_int_eq(tb_body_get_type(b), TB_DYNAMIC_BODY);
   tb_shape_def sd = tb_default_shape_def();
-  tb_circle c = {{0.0f, 0.0f}, 0.5f};
+  tb_circle c = {{2.0f, 0.0f}, 0.5f};
   ck_assert(!tb_shape_is_valid(tb_create_circle_shape(b, &sd, &c)));
   ck_assert_ptr_nonnull(strstr(tb_last_error(), "beyond TB_MAX_LENGTH"));
   ck_assert_uint_eq(tb_world_hash(w), before);
@@ -255,6 +253,92 @@ START_TEST(body_beyond_max_length) {
 }
 END_TEST
 
+/* The world ends at TB_MAX_LENGTH (issue 23 item 7): a body that a legal
+ * velocity carries there stops at the edge, its shapes still inside, and loses
+ * its speed outwards, so everything its getters return its setters accept
+ * and its shapes can still be added to. Dynamic and kinematic alike, on both
+ * axes and both sides. */
+START_TEST(bodies_stop_at_the_edge_of_the_world) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  ck_assert_int_eq(tb_world_set_maximum_linear_speed(w, 1.0e6f), TB_OK);
+  const tb_vec2 directions[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (int k = 0; k < 8; ++k) {
+    tb_vec2 d = directions[k % 4];
+    tb_body_id b = tbt_box_body(w, d.x * (TB_MAX_LENGTH - 1000.0f), d.y * (TB_MAX_LENGTH - 1000.0f), 0.5f, 0.5f);
+    if (k >= 4) ck_assert_int_eq(tb_body_set_type(b, TB_KINEMATIC_BODY), TB_OK);
+    /* 1e5 m/s covers the last 1000 m in the first of 60 steps */
+    ck_assert_int_eq(tb_body_set_linear_velocity(b, (tb_vec2){1.0e5f * d.x, 1.0e5f * d.y + 3.0f}), TB_OK);
+    for (int i = 0; i < 60; ++i) ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+    tb_vec2 p = tb_body_get_position(b), v = tb_body_get_linear_velocity(b);
+    ck_assert_float_le(fabsf(p.x), TB_MAX_LENGTH);
+    ck_assert_float_le(fabsf(p.y), TB_MAX_LENGTH);
+    ck_assert_float_ge(fabsf(d.x * p.x + d.y * p.y), TB_MAX_LENGTH - 10.0f); /* it got there */
+    ck_assert_float_eq(d.x * v.x + d.y * v.y, 0.0f);
+    ck_assert_int_eq(tb_body_set_transform(b, p, tb_body_get_angle(b)), TB_OK);
+    ck_assert_int_eq(tb_body_set_linear_velocity(b, v), TB_OK);
+    tb_circle c = {{0.0f, 0.0f}, 0.25f};
+    tb_shape_def sd = tb_default_shape_def();
+    ck_assert(tb_shape_is_valid(tb_create_circle_shape(b, &sd, &c)));
+    ck_assert_int_eq(tb_body_set_type(b, k >= 4 ? TB_DYNAMIC_BODY : TB_KINEMATIC_BODY), TB_OK);
+    ck_assert_int_eq(tb_destroy_body(b), TB_OK);
+  }
+  tb_destroy_world(w);
+}
+END_TEST
+
+/* Energy and momenta of the heaviest, fastest body the setters accept: the
+ * products overflow a float (1/2 1e18 kg (1e18 m/s)^2 = 5e53 J), and the
+ * getters report them saturated at TB_MAX_VALUE, finite. */
+START_TEST(derived_getters_stay_within_max_value) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_body_id b = tbt_box_body(w, 0.0f, 0.0f, 0.5f, 0.5f);
+  ck_assert_int_eq(tb_body_set_mass_data(b, (tb_mass_data){TB_MAX_VALUE, {0.0f, 0.0f}, TB_MAX_VALUE}), TB_OK);
+  ck_assert_int_eq(tb_body_set_linear_velocity(b, (tb_vec2){TB_MAX_VALUE, -TB_MAX_VALUE}), TB_OK);
+  ck_assert_int_eq(tb_body_set_angular_velocity(b, TB_MAX_VALUE), TB_OK);
+  ck_assert_float_eq(tb_body_get_kinetic_energy(b), TB_MAX_VALUE);
+  tb_vec2 p = tb_body_get_linear_momentum(b);
+  ck_assert_float_eq(p.x, TB_MAX_VALUE);
+  ck_assert_float_eq(p.y, -TB_MAX_VALUE);
+  ck_assert_float_eq(tb_body_get_angular_momentum(b, (tb_vec2){0.0f, 0.0f}), TB_MAX_VALUE);
+  ck_assert_float_eq(tb_body_get_angular_momentum(b, (tb_vec2){TB_MAX_LENGTH, TB_MAX_LENGTH}), TB_MAX_VALUE);
+  tb_vec2 v = tb_body_get_point_velocity(b, (tb_vec2){0.0f, TB_MAX_LENGTH}); /* 1e18 - 1e18 x 1e7 */
+  ck_assert_float_eq(v.x, -TB_MAX_VALUE);
+  ck_assert_float_eq(v.y, -TB_MAX_VALUE);
+  /* ordinary values are the exact products */
+  ck_assert_int_eq(tb_body_set_mass_data(b, (tb_mass_data){2.0f, {0.0f, 0.0f}, 0.5f}), TB_OK);
+  ck_assert_int_eq(tb_body_set_linear_velocity(b, (tb_vec2){3.0f, 4.0f}), TB_OK);
+  ck_assert_int_eq(tb_body_set_angular_velocity(b, 2.0f), TB_OK);
+  ck_assert_float_eq(tb_body_get_kinetic_energy(b), 26.0f); /* 1/2 2 25 + 1/2 0.5 4 */
+  ck_assert_float_eq(tb_body_get_linear_momentum(b).y, 8.0f);
+  tb_destroy_world(w);
+}
+END_TEST
+
+/* Shapes each within TB_MAX_VALUE add up beyond it: two discs of 0.6e18 kg,
+ * 1e6 m apart (parallel axis: 1.2e18 kg x (5e5 m)^2 = 3e29 kg m^2). The body
+ * reports its mass data saturated at TB_MAX_VALUE, which
+ * tb_body_set_mass_data accepts back. */
+START_TEST(summed_mass_saturates_at_max_value) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_body_def bd = tb_default_body_def();
+  bd.type = TB_DYNAMIC_BODY;
+  tb_body_id b = tb_create_body(w, &bd);
+  tb_shape_def sd = tb_default_shape_def();
+  sd.density = 0.6e18f / 3.14159265f; /* a unit disc of 0.6e18 kg */
+  const float x[2] = {-5.0e5f, 5.0e5f};
+  for (int i = 0; i < 2; ++i) {
+    tb_circle c = {{x[i], 0.0f}, 1.0f};
+    ck_assert(tb_shape_is_valid(tb_create_circle_shape(b, &sd, &c)));
+  }
+  tb_mass_data md = tb_body_get_mass_data(b);
+  ck_assert_float_eq(md.mass, TB_MAX_VALUE);
+  ck_assert_float_eq(md.rotational_inertia, TB_MAX_VALUE);
+  ck_assert_float_eq(md.center.x, 0.0f);
+  ck_assert_int_eq(tb_body_set_mass_data(b, md), TB_OK);
+  tb_destroy_world(w);
+}
+END_TEST
+
 static Suite* body_suite(void) {
   Suite* s = suite_create("body");
   TCase* tc = tcase_create("body");
@@ -267,6 +351,9 @@ static Suite* body_suite(void) {
   tcase_add_test(tc, deterministic_hash);
   tcase_add_test(tc, filter_change_refinds_pairs);
   tcase_add_test(tc, body_beyond_max_length);
+  tcase_add_test(tc, bodies_stop_at_the_edge_of_the_world);
+  tcase_add_test(tc, derived_getters_stay_within_max_value);
+  tcase_add_test(tc, summed_mass_saturates_at_max_value);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -404,6 +404,82 @@ START_TEST(default_mixing_is_geometric_mean) {
 }
 END_TEST
 
+static float mix_returns(float a, float b, void* ctx) {
+  (void)a, (void)b;
+  return *(const float*)ctx;
+}
+
+/* A mix callback's result outside its material's range (issue 23 item 9) is
+ * not used: the contact takes the default rule, the step that made the
+ * contact reports TB_ERR_NUMERIC naming the callback, and the bodies move on.
+ * A ball dropped 0.5 m comes to rest on the floor (a NaN restitution used to
+ * freeze it in the air). */
+START_TEST(mix_results_out_of_range_use_the_default_rule) {
+  const float bad_friction[] = {-1.0f, NAN, INFINITY, -INFINITY};
+  const float bad_restitution[] = {-1.0f, NAN, INFINITY, 1.5f};
+  for (int which = 0; which < 2; ++which) {
+    for (int i = 0; i < 4; ++i) {
+      float value = which == 0 ? bad_friction[i] : bad_restitution[i];
+      tb_world_def wd = tb_default_world_def();
+      if (which == 0)
+        wd.friction_mix = mix_returns;
+      else
+        wd.restitution_mix = mix_returns;
+      wd.mix_context = &value;
+      tb_world_id w = tb_create_world(&wd);
+      tb_shape_def sd = tb_default_shape_def();
+      tb_polygon floor;
+      tb_make_box(2.0f, 0.1f, &floor);
+      tb_create_polygon_shape(make_body(w, TB_STATIC_BODY, 0, 0), &sd, &floor);
+      sd.friction = 0.36f;
+      sd.restitution = 0.25f;
+      tb_body_id ball = make_body(w, TB_DYNAMIC_BODY, 0.0f, 0.85f);
+      add_circle(ball, &sd, 0.25f);
+      int reports = 0;
+      for (int k = 0; k < 120; ++k) {
+        tb_result r = tb_world_step(w, 1.0f / 60.0f, 4);
+        if (r == TB_OK) continue;
+        ck_assert_int_eq(r, TB_ERR_NUMERIC);
+        ck_assert_ptr_nonnull(strstr(tb_last_error(), which == 0 ? "friction_mix" : "restitution_mix"));
+        reports += 1;
+      }
+      ck_assert_int_eq(reports, 1); /* one contact, mixed once */
+      tb_contact_data cd;
+      ck_assert_int_eq(tb_body_get_contact_data(ball, &cd, 1), 1);
+      ck_assert_float_eq(cd.friction, sqrtf(0.6f * 0.36f)); /* the default rules: sqrt(fa fb) */
+      ck_assert_float_eq(cd.restitution, 0.25f);            /* and max(ra, rb) */
+      /* at rest on the floor: the centre 0.1 + 0.25 above its middle, within the contact's reach */
+      ck_assert_near(tb_body_get_position(ball).y, 0.35, TB_SPECULATIVE_DISTANCE);
+      ck_assert_near(tb_body_get_linear_velocity(ball).y, 0.0, 0.05);
+      tb_destroy_world(w);
+    }
+  }
+}
+END_TEST
+
+/* TB_MAX_GRAVITY is the gravity a contact holds at the default step (60 Hz,
+ * 4 substeps): a resting body sinks g / w^2 = 1e4 / (2 pi 115.2 Hz)^2 =
+ * 0.019 m, within TB_SPECULATIVE_DISTANCE, so a 5 cm box stays on a 5 cm
+ * floor. A body's gravity_scale cannot take it past that: a scale of 1e6 in a
+ * 10 m/s^2 world is clamped to TB_MAX_GRAVITY (unclamped, 1e7 m/s^2 pushed
+ * the box through the floor). */
+START_TEST(gravity_at_its_limit_is_held) {
+  const float world_gravity[2] = {TB_MAX_GRAVITY, 10.0f}, scale[2] = {1.0f, 1.0e6f};
+  for (int k = 0; k < 2; ++k) {
+    tb_world_id w = tbt_world(0.0f, -world_gravity[k]);
+    tb_shape_def sd = tb_default_shape_def();
+    tb_polygon floor;
+    tb_make_box(1.0f, 0.025f, &floor);
+    tb_create_polygon_shape(make_body(w, TB_STATIC_BODY, 0, 0), &sd, &floor);
+    tb_body_id box = tbt_box_body(w, 0.0f, 0.05f, 0.025f, 0.025f);
+    ck_assert_int_eq(tb_body_set_gravity_scale(box, scale[k]), TB_OK);
+    for (int i = 0; i < 120; ++i) ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+    ck_assert_near(tb_body_get_position(box).y, 0.05, TB_SPECULATIVE_DISTANCE);
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
 /* Pairs come and go with the fat AABBs. A step's manifolds use the positions
  * at its start, so after each step the touching contacts must be exactly the
  * circle pairs closer than the speculative distance before it (brute force). */
@@ -462,6 +538,8 @@ static Suite* contact_suite(void) {
   tcase_add_test(tc, pre_solve_set_later);
   tcase_add_test(tc, impulses_follow_points_whose_id_changed);
   tcase_add_test(tc, default_mixing_is_geometric_mean);
+  tcase_add_test(tc, mix_results_out_of_range_use_the_default_rule);
+  tcase_add_test(tc, gravity_at_its_limit_is_held);
   tcase_add_test(tc, touching_pairs_match_brute_force);
   suite_add_tcase(s, tc);
   return s;

@@ -855,6 +855,28 @@ START_TEST(reaction_force_of_hanging_mass) {
 }
 END_TEST
 
+/* The same with the heaviest mass under the strongest gravity: the true
+ * reaction, 1e18 kg x 1e4 m/s^2 = 1e22 N, is beyond TB_MAX_VALUE, and the
+ * force getter reports it saturated there (a value tb_body_apply_force takes). */
+START_TEST(reaction_force_saturates_at_max_value) {
+  tb_world_id w = tbt_world(0.0f, -TB_MAX_GRAVITY);
+  tb_body_id ground = static_body(w, (tb_vec2){0.0f, 0.0f});
+  tb_body_id disc = disc_body(w, (tb_vec2){0.0f, -1.0f}, 0.1f, 1.0f);
+  tb_body_set_mass_data(disc, (tb_mass_data){TB_MAX_VALUE, {0.0f, 0.0f}, TB_MAX_VALUE});
+  tb_revolute_joint_def jd = tb_default_revolute_joint_def();
+  jd.body_a = ground;
+  jd.body_b = disc;
+  jd.local_anchor_b = (tb_vec2){0.0f, 1.0f};
+  tb_joint_id j = tb_create_revolute_joint(w, &jd);
+  step(w, 60);
+  tb_vec2 f = tb_joint_get_constraint_force(j);
+  ck_assert_float_eq(f.y, TB_MAX_VALUE);
+  ck_assert_float_le(fabsf(f.x), TB_MAX_VALUE);
+  ck_assert_int_eq(tb_body_apply_force_to_center(disc, f), TB_OK);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* ---- life cycle ----------------------------------------------------------------- */
 
 START_TEST(creation_and_destruction_wake_sleeping_bodies) {
@@ -1658,6 +1680,7 @@ static Suite* joint_suite(void) {
   tcase_add_test(physics, mouse_pulls_to_target);
   tcase_add_test(physics, motor_joint_reaches_offset);
   tcase_add_test(physics, reaction_force_of_hanging_mass);
+  tcase_add_test(physics, reaction_force_saturates_at_max_value);
   tcase_add_test(physics, revolute_angle_is_continuous);
   suite_add_tcase(s, physics);
   TCase* life = tcase_create("life_cycle");
