@@ -48,11 +48,6 @@ enum { MOTION_FIELD = 1, MOTION_FREE = 2, MOTION_FAULT = 4, MOTION_DYNAMIC = 8 }
 static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_motion* motions, double t) {
   tb_solver_body* states = ctx->states;
   float h = ctx->h;
-  float max_speed = ctx->max_linear_speed;
-  /* At most half a turn per step (94 rad/s at 60 Hz): beyond it a corner can
-   * swing through a thin wall between two collisions, and the sweep of the
-   * continuous pass no longer describes the motion. */
-  float max_angular = 0.5f * 3.14159265f * ctx->inv_dt;
   for (int i = 0; i < w->awake_count; ++i) {
     tb_body_motion* m = &motions[i];
     if (!(m->flags & MOTION_DYNAMIC) || (m->flags & MOTION_FREE)) continue;
@@ -86,12 +81,8 @@ static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_moti
       m->flags |= MOTION_FAULT;
       continue;
     }
-    float speed_sq = tb_length_sq(v);
-    if (speed_sq > max_speed * max_speed) v = tb_scale(max_speed / sqrtf(speed_sq), v);
-    if (av > max_angular) av = max_angular;
-    if (av < -max_angular) av = -max_angular;
-    s->v = v;
-    s->w = av;
+    s->v = tb_cap_linear_speed(v, ctx->max_linear_speed);
+    s->w = tb_cap_angular_speed(av, ctx->max_angular_speed);
   }
 }
 
@@ -101,6 +92,10 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
   for (int i = 0; i < w->awake_count; ++i) {
     if (motions[i].flags & MOTION_FREE) continue;
     tb_solver_body* s = &states[i];
+    /* the solve may have sped a body up beyond the caps (a joint or a deep
+     * contact driven hard by a long substep): it moves within them */
+    s->v = tb_cap_linear_speed(s->v, ctx->max_linear_speed);
+    s->w = tb_cap_angular_speed(s->w, ctx->max_angular_speed);
     tb_vec2 v = s->v;
     float omega = s->w;
     if (ctx->push_velocities) {
@@ -220,6 +215,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.contact_push_max_velocity = w->contact_push_max_velocity;
   ctx.restitution_threshold = w->restitution_threshold;
   ctx.max_linear_speed = w->maximum_linear_speed;
+  ctx.max_angular_speed = TB_QUARTER_TURN * ctx.inv_dt;
   ctx.enable_warm_starting = w->enable_warm_starting;
   ctx.states = w->states;
   ctx.static_index = n;
@@ -230,9 +226,12 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   for (int i = 0; i < n; ++i) {
     tb_body* b = tb_body_at(w, w->awake[i]);
     bool dynamic = b->type == TB_DYNAMIC_BODY;
+    /* a kinematic body moves within the caps too (a dynamic one is capped
+     * as its velocity is integrated) */
+    tb_vec2 v = dynamic ? b->linear_velocity : tb_cap_linear_speed(b->linear_velocity, ctx.max_linear_speed);
+    float omega = dynamic ? b->angular_velocity : tb_cap_angular_speed(b->angular_velocity, ctx.max_angular_speed);
     w->states[i] = (tb_solver_body){
-        b->linear_velocity, b->angular_velocity, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f,
-        {0.0f, 0.0f},       {1.0f, 0.0f}};
+        v, omega, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
     tb_body_motion* m = &motions[i];
     m->flags = 0;
     if (dynamic) {
@@ -293,7 +292,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     b->angle0 = b->angle;
     b->is_fast = false;
     if (m->flags & MOTION_FREE) {
-      bool ok = !(m->flags & MOTION_FAULT) && tb_integrate_free_body(w, index, dt, substeps);
+      bool ok = !(m->flags & MOTION_FAULT) && tb_integrate_free_body(w, index, &ctx);
       b->force = (tb_vec2){0.0f, 0.0f};
       b->torque = 0.0f;
       if (!ok) {
@@ -314,8 +313,9 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       b->center = c;
       b->center_residual = residual;
       b->angle = a;
-      b->linear_velocity = s->v;
-      b->angular_velocity = s->w;
+      /* restitution and the relax passes came after the last cap */
+      b->linear_velocity = tb_cap_linear_speed(s->v, ctx.max_linear_speed);
+      b->angular_velocity = tb_cap_angular_speed(s->w, ctx.max_angular_speed);
       tb_body_sync_transform(b);
     }
     tb_vec2 moved = tb_sub(b->center, b->center0);
