@@ -41,7 +41,7 @@ typedef struct tb_body_motion {
   int flags;
 } tb_body_motion;
 
-enum { MOTION_FIELD = 1, MOTION_FREE = 2, MOTION_FAULT = 4, MOTION_DYNAMIC = 8 };
+enum { MOTION_FIELD = 1, MOTION_FREE = 2, MOTION_FAULT = 4, MOTION_DYNAMIC = 8, MOTION_JOINTED = 16 };
 
 /* ---- velocity and position integration ------------------------------------ */
 
@@ -92,10 +92,15 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
   for (int i = 0; i < w->awake_count; ++i) {
     if (motions[i].flags & MOTION_FREE) continue;
     tb_solver_body* s = &states[i];
-    /* the solve may have sped a body up beyond the caps (a joint or a deep
-     * contact driven hard by a long substep): it moves within them */
-    s->v = tb_cap_linear_speed(s->v, ctx->max_linear_speed);
-    s->w = tb_cap_angular_speed(s->w, ctx->max_angular_speed);
+    if (!(motions[i].flags & MOTION_JOINTED)) {
+      /* A contact can speed a body up beyond the caps within the substep (it
+       * spins a box that hits a wall at the speed cap): it moves within them,
+       * or a corner swings through the wall. Not a jointed body: its joints
+       * need their speeds (a limb swings faster than a quarter turn per long
+       * step), and capping them mid-solve shook ragdolls apart at 15 Hz. */
+      s->v = tb_cap_linear_speed(s->v, ctx->max_linear_speed);
+      s->w = tb_cap_angular_speed(s->w, ctx->max_angular_speed);
+    }
     tb_vec2 v = s->v;
     float omega = s->w;
     if (ctx->push_velocities) {
@@ -233,9 +238,9 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     w->states[i] = (tb_solver_body){
         v, omega, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
     tb_body_motion* m = &motions[i];
-    m->flags = 0;
+    m->flags = b->joint_count > 0 ? MOTION_JOINTED : 0;
     if (dynamic) {
-      m->flags = MOTION_DYNAMIC | (field ? MOTION_FIELD : 0);
+      m->flags |= MOTION_DYNAMIC | (field ? MOTION_FIELD : 0);
       m->accel = tb_mul_add(tb_scale(b->gravity_scale, w->gravity), b->inv_mass, b->force);
       m->alpha = b->inv_inertia * b->torque;
       m->linear_damping = 1.0f / (1.0f + h * b->linear_damping);
