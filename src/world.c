@@ -271,9 +271,11 @@ bool tb_world_is_valid(tb_world_id id) {
 tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   tb_world* w = tb_world_get_unlocked(id, "tb_world_step");
   if (w == NULL) return tb_last_result();
-  if (!isfinite(time_step) || time_step <= 0.0f || time_step > 1.0f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_step: time_step = %g must be in (0, 1] seconds",
-                   (double)time_step);
+  if (!isfinite(time_step) || time_step <= 0.0f || time_step > TB_MAX_TIME_STEP)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT,
+                   "tb_world_step: time_step = %g must be in (0, TB_MAX_TIME_STEP = %g] seconds (longer steps are "
+                   "not stable: take several per frame)",
+                   (double)time_step, (double)TB_MAX_TIME_STEP);
   if (substeps < 1 || substeps > 64)
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_step: substeps = %d must be in 1..64", substeps);
   if (!(time_step / (float)substeps >= TB_MIN_SUBSTEP))

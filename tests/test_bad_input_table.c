@@ -181,6 +181,12 @@ START_TEST(world_settings) {
   /* the time step and the substeps at and around their limits */
   const float bad_steps[] = {0.0f, -0.0f, -1e-30f, 1.0000001f, NAN, -NAN};
   for (int i = 0; i < 6; ++i) REJECT(tb_world_step(W, bad_steps[i], 4), TB_ERR_INVALID_ARGUMENT, "time_step");
+  /* steps longer than the solver keeps stable (issue 23: up to 1 s was
+   * taken, and a car reached 1.6e13 m/s) */
+  const float long_steps[] = {nextafterf(TB_MAX_TIME_STEP, INFINITY), 0.1f, 0.5f, 1.0f};
+  for (int i = 0; i < 4; ++i)
+    for (int sub = 1; sub <= 64; sub *= 4)
+      REJECT(tb_world_step(W, long_steps[i], sub), TB_ERR_INVALID_ARGUMENT, "TB_MAX_TIME_STEP");
   const int bad_substeps[] = {0, -1, 65, 2147483647, -2147483647 - 1};
   for (int i = 0; i < 5; ++i)
     REJECT(tb_world_step(W, 1.0f / 60.0f, bad_substeps[i]), TB_ERR_INVALID_ARGUMENT, "substeps");

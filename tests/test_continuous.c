@@ -587,10 +587,10 @@ END_TEST
  * within maximum_linear_speed on every path: before, a free body under the
  * default integrator kept it, and at 1e9 m/s (1.7e7 m per step) a 0.5 m box
  * crossed a 1 m static wall in one step. Every integrator, both the default
- * cap and the largest one, TB_MAX_SPEED, at 60 Hz and with the longest step
- * (1 s: 1e6 m per step at TB_MAX_SPEED). */
+ * cap and the largest one, TB_MAX_SPEED, at 60 Hz and with the longest step,
+ * TB_MAX_TIME_STEP. */
 START_TEST(box_at_any_accepted_speed_stops_at_a_wall) {
-  const float caps[2] = {1000.0f, TB_MAX_SPEED}, steps[2] = {DT, 1.0f};
+  const float caps[2] = {1000.0f, TB_MAX_SPEED}, steps[2] = {DT, TB_MAX_TIME_STEP};
   for (int scheme = TB_INTEGRATOR_SEMI_IMPLICIT_EULER; scheme <= TB_INTEGRATOR_RK4; ++scheme)
     for (int c = 0; c < 2; ++c)
       for (int k = 0; k < 2; ++k) {
@@ -611,12 +611,12 @@ END_TEST
 
 /* Twenty boxes thrown at 1e18 m/s (TB_MAX_VALUE) and 1e18 rad/s in a closed
  * room of 1 cm walls all left it before the caps held on every path. Each
- * integrator, the default cap and TB_MAX_SPEED, 60 Hz and 1 s steps: every
+ * integrator, the default cap and TB_MAX_SPEED, 60 Hz and TB_MAX_TIME_STEP: every
  * box is still inside after two seconds. (The boxes share a negative group,
  * so they do not collide: one box knocked into another at these speeds is a
  * different matter, see the report of issue 23.) */
 START_TEST(boxes_at_the_largest_velocity_stay_in_a_closed_room) {
-  const float caps[2] = {1000.0f, TB_MAX_SPEED}, steps[2] = {DT, 1.0f};
+  const float caps[2] = {1000.0f, TB_MAX_SPEED}, steps[2] = {DT, TB_MAX_TIME_STEP};
   const float half = 10.0f, wall = 0.005f;
   for (int scheme = TB_INTEGRATOR_SEMI_IMPLICIT_EULER; scheme <= TB_INTEGRATOR_RK4; ++scheme)
     for (int c = 0; c < 2; ++c)
