@@ -256,10 +256,11 @@ bool tb_world_is_valid(tb_world_id world);
  * TB_MAX_VALUE, and the reciprocal of a tiny step overflows. */
 #define TB_MIN_SUBSTEP (TB_MAX_LENGTH / TB_MAX_VALUE)
 
-/* Longest accepted time step (seconds): 30 Hz. The step collides once and
- * the solver keeps every gallery scene (demos/scenes) stable at every
- * substep count up to it (the stress suite's step_sweep). Longer steps were
- * accepted up to 1 s and were not stable: bodies move farther per step than
+/* Longest accepted time step (seconds): 30 Hz. The step collides once, and
+ * up to this step the solver keeps every gallery scene (demos/scenes) stable
+ * at every substep count (tests/scenes/test_scenes.c,
+ * gallery_is_stable_at_every_accepted_step). Steps up to 1 s were once
+ * accepted and were not stable: bodies move farther per step than
  * the contacts found at its start describe (a tumbler's kinematic walls
  * sweep past the bodies inside; at 1/15 s bodies left it whatever the
  * substeps), and with one substep of 0.1 s joints exploded (ragdolls) and
