@@ -219,7 +219,9 @@ typedef struct tb_world_def {
    * ragdolls, bridges: any joint graph without a loop through dynamic bodies)
    * are solved exactly and held at a stiffness of 8 / substep (rad/s) with
    * joint_damping_ratio (default 2, i.e. over-damped); a joint that closes a
-   * loop uses joint_hertz (default 60) for its drift correction. */
+   * loop uses joint_hertz (> 0, default 60) for its drift correction, capped
+   * like contacts at 0.48 times the substep rate (115 Hz at 60 Hz and 4
+   * substeps): stiffer, Gauss-Seidel overshoots and the loop gains energy. */
   float contact_hertz;
   float contact_damping_ratio;
   float contact_push_max_velocity;
