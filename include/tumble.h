@@ -67,6 +67,11 @@ extern "C" {
  * gravity_scale times the world's, is clamped to this length too. */
 #define TB_MAX_GRAVITY 1.0e4f
 
+/* Largest accepted tb_world_def.maximum_linear_speed (m/s). Measured: at it
+ * the continuous pass still stops a body at a 1 cm wall with steps of 1 s;
+ * with 1e7 m per step and more, every body left a closed room. */
+#define TB_MAX_SPEED 1.0e6f
+
 /* Most relax passes per substep (tb_world_def.relax_iterations). */
 #define TB_MAX_RELAX_ITERATIONS 64
 
@@ -241,7 +246,9 @@ typedef struct tb_world_def {
    * ragdolls, bridges: any joint graph without a loop through dynamic bodies)
    * are solved exactly and held at a stiffness of 8 / substep (rad/s) with
    * joint_damping_ratio (default 2, i.e. over-damped); a joint that closes a
-   * loop uses joint_hertz (default 60) for its drift correction. */
+   * loop uses joint_hertz (> 0, default 60) for its drift correction, capped
+   * like contacts at 0.48 times the substep rate (115 Hz at 60 Hz and 4
+   * substeps): stiffer, Gauss-Seidel overshoots and the loop gains energy. */
   float contact_hertz;
   float contact_damping_ratio;
   float contact_push_max_velocity;
@@ -250,7 +257,14 @@ typedef struct tb_world_def {
   float joint_damping_ratio;
   /* Restitution applies to approach speeds above this (m/s, >= 0, default 1). */
   float restitution_threshold;
-  /* Speed limit of every body (m/s, > 0, default 1000): a guard against blow-ups. */
+  /* Speed caps, a guard against blow-ups: every dynamic and kinematic body
+   * moves at most maximum_linear_speed (m/s, > 0 and at most TB_MAX_SPEED,
+   * default 1000) and turns at most a quarter turn per step (pi / 2 / time_step
+   * rad/s, 94 rad/s at 60 Hz), whether it touches anything or not, under
+   * every integrator. A velocity set beyond the caps is accepted (up to
+   * TB_MAX_VALUE) and brought within them by the next step; the velocities a
+   * step leaves are within them. With continuous on, a dynamic body does not
+   * pass through a static one at any speed the caps allow. */
   float maximum_linear_speed;
   bool enable_sleep;         /* default true: resting islands fall asleep */
   bool enable_continuous;    /* default true: fast bodies are swept (no tunnelling) */
@@ -270,8 +284,27 @@ tb_world_id tb_create_world(const tb_world_def* def);
 tb_result tb_destroy_world(tb_world_id world);
 bool tb_world_is_valid(tb_world_id world);
 
-/* Advance by time_step seconds (> 0, finite, at most 1 s), split into substeps
- * (1 to 64; 4 is a good default at 60 Hz). */
+/* Shortest accepted substep, time_step / substeps (seconds). The solver
+ * divides distances by the substep (position bias, speculative contacts):
+ * shorter, a distance within TB_MAX_LENGTH would become a speed beyond
+ * TB_MAX_VALUE, and the reciprocal of a tiny step overflows. */
+#define TB_MIN_SUBSTEP (TB_MAX_LENGTH / TB_MAX_VALUE)
+
+/* Longest accepted time step (seconds): 30 Hz. The step collides once, and
+ * up to this step the solver keeps every gallery scene (demos/scenes) stable
+ * at every substep count (tests/scenes/test_scenes.c,
+ * gallery_is_stable_at_every_accepted_step). Steps up to 1 s were once
+ * accepted and were not stable: bodies move farther per step than
+ * the contacts found at its start describe (a tumbler's kinematic walls
+ * sweep past the bodies inside; at 1/15 s bodies left it whatever the
+ * substeps), and with one substep of 0.1 s joints exploded (ragdolls) and
+ * chains flew apart; a wheel-joint car reached 1.6e13 m/s at 1 s. A game
+ * rendering slower than 30 Hz takes several steps per frame. */
+#define TB_MAX_TIME_STEP (1.0f / 30.0f)
+
+/* Advance by time_step seconds (finite, at most TB_MAX_TIME_STEP), split into
+ * substeps (1 to 64; 4 is a good default at 60 Hz), each at least
+ * TB_MIN_SUBSTEP (1e-11 s) long. */
 tb_result tb_world_step(tb_world_id world, float time_step, int substeps);
 
 /* Gravity: finite, at most TB_MAX_GRAVITY long. */

@@ -136,6 +136,23 @@ static bool chain_faces(const sweep_context* sc, const tb_shape* chain, tb_trans
   return offset1 - offset2 >= CHAIN_APPROACH_FRACTION * sc->extent && offset1 > offset2;
 }
 
+/* Whether the step drives a core that starts at the target gap (or closer)
+ * into the obstacle: its centre moves towards the obstacle by more than its
+ * radius (never when the centre starts inside: then there is no normal).
+ * Left alone, such a core went through: a small box knocked into a wall's
+ * corner by a faster box was stopped with its core at the target gap, and
+ * the next knock carried it into the wall (issue 23). A body sliding along
+ * the surface moves its core along it, not into it, and is still left alone. */
+static bool core_driven_in(const sweep_context* sc, const tb_shape_proxy* other, tb_transform other_xf,
+                           const tb_shape_proxy* core) {
+  tb_distance_input in = {*other, *core, other_xf, tb_sweep_transform(&sc->sweep, 0.0f)};
+  tb_simplex_cache cache = {0};
+  tb_distance_output out;
+  if (tb_shape_distance(&in, &cache, &out) != TB_OK) return false;
+  tb_vec2 moved = tb_sub(sc->centroid2, sc->centroid1);
+  return tb_dot(moved, out.normal) < -core->radius; /* normal: from the obstacle to the core */
+}
+
 static bool candidate(int32_t proxy, int32_t other_index, void* context) {
   (void)proxy;
   sweep_context* sc = context;
@@ -172,6 +189,10 @@ static bool candidate(int32_t proxy, int32_t other_index, void* context) {
      * body, and the velocity the solver gave it, in place for good. */
     tb_shape_proxy core = tb_make_proxy(&sc->centroid_local, 1, CORE_FRACTION * sc->extent);
     k = impact(&other, &fixed, &core, &sc->sweep, sc->t, &t);
+    if ((k == TOI_AT_START || k == TOI_OVERLAPPED) && core_driven_in(sc, &other, xf, &core)) {
+      t = 0.0f; /* the body stays where it started; the contact pushes it out */
+      k = TOI_IMPACT;
+    }
   }
   if (k == TOI_IMPACT && t < sc->t) sc->t = t;
   return true;

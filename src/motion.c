@@ -7,7 +7,13 @@
  * solver: V += h a; V /= (1 + h c_v) (damping like Box2D); X += h V. The angle
  * is a scalar integrated the same way, so constant spin is exact up to float
  * rounding. Midpoint (RK2) and RK4 evaluate the ODE at intermediate states,
- * with damping as the linear term above; they pay off for smooth force fields. */
+ * with damping as the linear term above; they pay off for smooth force fields.
+ *
+ * Every state, the stages' included, keeps its velocities within the step's
+ * speed caps (solver.h), so a substep moves a body no further than the solver
+ * would. A stage that is not finite (an acceleration that overflowed: a force
+ * on a tiny mass) ends the body's step before the force field could see it:
+ * the body keeps its state from before the step, as in the solver. */
 #include <stddef.h>
 
 #include "math_internal.h"
@@ -33,7 +39,17 @@ typedef struct body_ctx {
   const tb_body* body;
   tb_body_id id;
   tb_vec2 gravity; /* g times the body's gravity scale */
+  float max_linear_speed, max_angular_speed;
 } body_ctx;
+
+static bool state_finite(const state* y) {
+  return tb_vec_finite(y->x) && isfinite(y->a) && tb_vec_finite(y->v) && isfinite(y->w);
+}
+
+static void cap_speeds(const body_ctx* c, state* y) {
+  y->v = tb_cap_linear_speed(y->v, c->max_linear_speed);
+  y->w = tb_cap_angular_speed(y->w, c->max_angular_speed);
+}
 
 /* The applied force plus the field's, at time t and state y. */
 static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* force, float* torque) {
@@ -50,23 +66,28 @@ static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* for
   }
 }
 
-/* dy/dt of the damped equations of motion (used by the Runge-Kutta schemes). */
-static rate derivative(const body_ctx* c, double t, const state* y) {
+/* dy/dt of the damped equations of motion (used by the Runge-Kutta schemes) at
+ * a finite state y; false when y is not finite (the field is not called). */
+static bool derivative(const body_ctx* c, double t, const state* y, rate* out) {
+  if (!state_finite(y)) return false;
   tb_vec2 f;
   float tq;
   total_load(c, t, y, &f, &tq);
   const tb_body* b = c->body;
   tb_vec2 acc = tb_sub(tb_mul_add(c->gravity, b->inv_mass, f), tb_scale(b->linear_damping, y->v));
   float alpha = b->inv_inertia * tq - b->angular_damping * y->w;
-  return (rate){y->v, y->w, acc, alpha};
+  *out = (rate){y->v, y->w, acc, alpha};
+  return true;
 }
 
-/* y + h d */
-static state advance(const state* y, float h, const rate* d) {
-  return (state){tb_mul_add(y->x, h, d->dx), y->a + h * d->da, tb_mul_add(y->v, h, d->dv), y->w + h * d->dw};
+/* y + h d, within the speed caps */
+static state advance(const body_ctx* c, const state* y, float h, const rate* d) {
+  state next = {tb_mul_add(y->x, h, d->dx), y->a + h * d->da, tb_mul_add(y->v, h, d->dv), y->w + h * d->dw};
+  cap_speeds(c, &next);
+  return next;
 }
 
-static void step_euler(const body_ctx* c, double t, float h, state* y) {
+static bool step_euler(const body_ctx* c, double t, float h, state* y) {
   tb_vec2 f;
   float tq;
   total_load(c, t, y, &f, &tq);
@@ -75,53 +96,57 @@ static void step_euler(const body_ctx* c, double t, float h, state* y) {
   y->w += h * b->inv_inertia * tq;
   y->v = tb_scale(1.0f / (1.0f + h * b->linear_damping), y->v);
   y->w *= 1.0f / (1.0f + h * b->angular_damping);
+  cap_speeds(c, y);
   y->x = tb_mul_add(y->x, h, y->v);
   y->a += h * y->w;
+  return state_finite(y);
 }
 
-static void step_midpoint(const body_ctx* c, double t, float h, state* y) {
-  rate k1 = derivative(c, t, y);
-  state mid = advance(y, 0.5f * h, &k1);
-  rate k2 = derivative(c, t + 0.5 * h, &mid);
-  *y = advance(y, h, &k2);
+static bool step_midpoint(const body_ctx* c, double t, float h, state* y) {
+  rate k1, k2;
+  if (!derivative(c, t, y, &k1)) return false;
+  state mid = advance(c, y, 0.5f * h, &k1);
+  if (!derivative(c, t + 0.5 * h, &mid, &k2)) return false;
+  *y = advance(c, y, h, &k2);
+  return state_finite(y);
 }
 
-static void step_rk4(const body_ctx* c, double t, float h, state* y) {
-  rate k1 = derivative(c, t, y);
-  state y2 = advance(y, 0.5f * h, &k1);
-  rate k2 = derivative(c, t + 0.5 * h, &y2);
-  state y3 = advance(y, 0.5f * h, &k2);
-  rate k3 = derivative(c, t + 0.5 * h, &y3);
-  state y4 = advance(y, h, &k3);
-  rate k4 = derivative(c, t + h, &y4);
+static bool step_rk4(const body_ctx* c, double t, float h, state* y) {
+  rate k1, k2, k3, k4;
+  if (!derivative(c, t, y, &k1)) return false;
+  state y2 = advance(c, y, 0.5f * h, &k1);
+  if (!derivative(c, t + 0.5 * h, &y2, &k2)) return false;
+  state y3 = advance(c, y, 0.5f * h, &k2);
+  if (!derivative(c, t + 0.5 * h, &y3, &k3)) return false;
+  state y4 = advance(c, y, h, &k3);
+  if (!derivative(c, t + h, &y4, &k4)) return false;
   /* y += h/6 (k1 + 2 k2 + 2 k3 + k4) */
   rate sum = {
       {k1.dx.x + 2.0f * k2.dx.x + 2.0f * k3.dx.x + k4.dx.x, k1.dx.y + 2.0f * k2.dx.y + 2.0f * k3.dx.y + k4.dx.y},
       k1.da + 2.0f * k2.da + 2.0f * k3.da + k4.da,
       {k1.dv.x + 2.0f * k2.dv.x + 2.0f * k3.dv.x + k4.dv.x, k1.dv.y + 2.0f * k2.dv.y + 2.0f * k3.dv.y + k4.dv.y},
       k1.dw + 2.0f * k2.dw + 2.0f * k3.dw + k4.dw};
-  *y = advance(y, h / 6.0f, &sum);
+  *y = advance(c, y, h / 6.0f, &sum);
+  return state_finite(y);
 }
 
-static bool state_finite(const state* y) {
-  return tb_vec_finite(y->x) && isfinite(y->a) && tb_vec_finite(y->v) && isfinite(y->w);
-}
-
-bool tb_integrate_free_body(tb_world* w, int index, float dt, int substeps) {
-  float h = dt / (float)substeps;
+bool tb_integrate_free_body(tb_world* w, int index, const tb_step_context* ctx) {
+  float h = ctx->h;
   tb_body* b = tb_body_at(w, index);
+  body_ctx c = {w, b, tb_make_body_id(w, index), tb_body_gravity(w, b), ctx->max_linear_speed, ctx->max_angular_speed};
   state y = {{0.0f, 0.0f}, b->angle, b->linear_velocity, b->angular_velocity};
-  body_ctx c = {w, b, tb_make_body_id(w, index), tb_body_gravity(w, b)};
-  for (int k = 0; k < substeps; ++k) {
+  cap_speeds(&c, &y); /* a velocity set beyond the caps */
+  bool ok = true;
+  for (int k = 0; k < ctx->substeps && ok; ++k) {
     double t = w->time + (double)k * h;
     switch (w->integrator) {
-      case TB_INTEGRATOR_SEMI_IMPLICIT_EULER: step_euler(&c, t, h, &y); break;
-      case TB_INTEGRATOR_MIDPOINT: step_midpoint(&c, t, h, &y); break;
-      case TB_INTEGRATOR_RK4: step_rk4(&c, t, h, &y); break;
+      case TB_INTEGRATOR_SEMI_IMPLICIT_EULER: ok = step_euler(&c, t, h, &y); break;
+      case TB_INTEGRATOR_MIDPOINT: ok = step_midpoint(&c, t, h, &y); break;
+      case TB_INTEGRATOR_RK4: ok = step_rk4(&c, t, h, &y); break;
     }
   }
   if (b->fixed_rotation) y.w = 0.0f;
-  if (!state_finite(&y)) return false; /* contain the NaN: this body keeps its old state */
+  if (!ok) return false; /* contain the NaN: this body keeps its old state */
   b->center = tb_two_sum(b->center, tb_add(b->center_residual, y.x), &b->center_residual);
   b->angle = y.a;
   b->linear_velocity = y.v;

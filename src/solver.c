@@ -41,18 +41,13 @@ typedef struct tb_body_motion {
   int flags;
 } tb_body_motion;
 
-enum { MOTION_FIELD = 1, MOTION_FREE = 2, MOTION_FAULT = 4, MOTION_DYNAMIC = 8 };
+enum { MOTION_FIELD = 1, MOTION_FREE = 2, MOTION_FAULT = 4, MOTION_DYNAMIC = 8, MOTION_JOINTED = 16 };
 
 /* ---- velocity and position integration ------------------------------------ */
 
 static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_motion* motions, double t) {
   tb_solver_body* states = ctx->states;
   float h = ctx->h;
-  float max_speed = ctx->max_linear_speed;
-  /* At most half a turn per step (94 rad/s at 60 Hz): beyond it a corner can
-   * swing through a thin wall between two collisions, and the sweep of the
-   * continuous pass no longer describes the motion. */
-  float max_angular = 0.5f * 3.14159265f * ctx->inv_dt;
   for (int i = 0; i < w->awake_count; ++i) {
     tb_body_motion* m = &motions[i];
     if (!(m->flags & MOTION_DYNAMIC) || (m->flags & MOTION_FREE)) continue;
@@ -86,12 +81,8 @@ static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_moti
       m->flags |= MOTION_FAULT;
       continue;
     }
-    float speed_sq = tb_length_sq(v);
-    if (speed_sq > max_speed * max_speed) v = tb_scale(max_speed / sqrtf(speed_sq), v);
-    if (av > max_angular) av = max_angular;
-    if (av < -max_angular) av = -max_angular;
-    s->v = v;
-    s->w = av;
+    s->v = tb_cap_linear_speed(v, ctx->max_linear_speed);
+    s->w = tb_cap_angular_speed(av, ctx->max_angular_speed);
   }
 }
 
@@ -101,6 +92,15 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
   for (int i = 0; i < w->awake_count; ++i) {
     if (motions[i].flags & MOTION_FREE) continue;
     tb_solver_body* s = &states[i];
+    if (!(motions[i].flags & MOTION_JOINTED)) {
+      /* A contact can speed a body up beyond the caps within the substep (it
+       * spins a box that hits a wall at the speed cap): it moves within them,
+       * or a corner swings through the wall. Not a jointed body: its joints
+       * need their speeds (a limb swings faster than a quarter turn per long
+       * step), and capping them mid-solve shook ragdolls apart at 15 Hz. */
+      s->v = tb_cap_linear_speed(s->v, ctx->max_linear_speed);
+      s->w = tb_cap_angular_speed(s->w, ctx->max_angular_speed);
+    }
     tb_vec2 v = s->v;
     float omega = s->w;
     if (ctx->push_velocities) {
@@ -178,6 +178,16 @@ static bool has_constraints(const tb_world* w, int body) {
  * settled 30-box column's passes change speeds by float round-off (about
  * 6e-7 m/s) and stop after two. */
 #define TB_CONTACT_MAX_H_OMEGA 3.0f
+/* The drift correction of joints that close a loop (joint_hertz; trees are
+ * solved exactly, joint_tree.c) is capped at the same h omega: a stiffer soft
+ * row solved by Gauss-Seidel overshoots and feeds energy in. A ladder of ten
+ * closed squares of bars at joint_hertz 1,000 Hz reached 150 m/s at 60 Hz and
+ * 4 substeps (h omega = 26), 1,000 m/s with 64; capped at 3 it swings at
+ * 27 m/s (24 m/s at the default 60 Hz); at 4, 75 m/s with 64 substeps, at 6,
+ * 191. Softer is not safer: at 2 the ragdolls' limbs came apart at 1/30 s in
+ * one substep. The default, h omega = 1.57 at 60 Hz and 4 substeps, is
+ * below the cap and unchanged. */
+#define TB_JOINT_MAX_H_OMEGA 3.0f
 #define TB_RELAX_TOLERANCE 1e-5f /* m/s: 10 um in a second */
 
 /* Sweep direction. Gauss-Seidel in one fixed order favours the constraints
@@ -216,10 +226,12 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.contact_damping_ratio = w->contact_damping_ratio;
   ctx.contact_softness = tb_make_softness(ctx.contact_hertz, w->contact_damping_ratio, h);
   ctx.static_softness = tb_make_softness(ctx.static_hertz, w->contact_damping_ratio, h);
-  ctx.joint_softness = tb_make_softness(w->joint_hertz, w->joint_damping_ratio, h);
+  ctx.joint_softness =
+      tb_make_softness(fminf(w->joint_hertz, TB_JOINT_MAX_H_OMEGA / (TB_TWO_PI_F * h)), w->joint_damping_ratio, h);
   ctx.contact_push_max_velocity = w->contact_push_max_velocity;
   ctx.restitution_threshold = w->restitution_threshold;
   ctx.max_linear_speed = w->maximum_linear_speed;
+  ctx.max_angular_speed = TB_QUARTER_TURN * ctx.inv_dt;
   ctx.enable_warm_starting = w->enable_warm_starting;
   ctx.states = w->states;
   ctx.static_index = n;
@@ -230,13 +242,16 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   for (int i = 0; i < n; ++i) {
     tb_body* b = tb_body_at(w, w->awake[i]);
     bool dynamic = b->type == TB_DYNAMIC_BODY;
+    /* a kinematic body moves within the caps too (a dynamic one is capped
+     * as its velocity is integrated) */
+    tb_vec2 v = dynamic ? b->linear_velocity : tb_cap_linear_speed(b->linear_velocity, ctx.max_linear_speed);
+    float omega = dynamic ? b->angular_velocity : tb_cap_angular_speed(b->angular_velocity, ctx.max_angular_speed);
     w->states[i] = (tb_solver_body){
-        b->linear_velocity, b->angular_velocity, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f,
-        {0.0f, 0.0f},       {1.0f, 0.0f}};
+        v, omega, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
     tb_body_motion* m = &motions[i];
-    m->flags = 0;
+    m->flags = b->joint_count > 0 ? MOTION_JOINTED : 0;
     if (dynamic) {
-      m->flags = MOTION_DYNAMIC | (field ? MOTION_FIELD : 0);
+      m->flags |= MOTION_DYNAMIC | (field ? MOTION_FIELD : 0);
       m->accel = tb_mul_add(tb_body_gravity(w, b), b->inv_mass, b->force);
       m->alpha = b->inv_inertia * b->torque;
       m->linear_damping = 1.0f / (1.0f + h * b->linear_damping);
@@ -293,7 +308,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     b->angle0 = b->angle;
     b->is_fast = false;
     if (m->flags & MOTION_FREE) {
-      bool ok = !(m->flags & MOTION_FAULT) && tb_integrate_free_body(w, index, dt, substeps);
+      bool ok = !(m->flags & MOTION_FAULT) && tb_integrate_free_body(w, index, &ctx);
       b->force = (tb_vec2){0.0f, 0.0f};
       b->torque = 0.0f;
       if (!ok) {
@@ -314,8 +329,9 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       b->center = c;
       b->center_residual = residual;
       b->angle = a;
-      b->linear_velocity = s->v;
-      b->angular_velocity = s->w;
+      /* restitution and the relax passes came after the last cap */
+      b->linear_velocity = tb_cap_linear_speed(s->v, ctx.max_linear_speed);
+      b->angular_velocity = tb_cap_angular_speed(s->w, ctx.max_angular_speed);
       tb_body_sync_transform(b);
     }
     tb_vec2 moved = tb_sub(b->center, b->center0);

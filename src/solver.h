@@ -4,6 +4,7 @@
 #ifndef TB_SOLVER_H
 #define TB_SOLVER_H
 
+#include <math.h>
 #include <stdbool.h>
 
 #include "tumble.h"
@@ -46,7 +47,8 @@ typedef struct tb_step_context {
   tb_softness joint_softness;
   float contact_push_max_velocity;
   float restitution_threshold;
-  float max_linear_speed;
+  float max_linear_speed;  /* the world's maximum_linear_speed */
+  float max_angular_speed; /* a quarter turn per step: TB_QUARTER_TURN / dt */
   bool enable_warm_starting;
   /* Solver bodies: the awake bodies in awake order, then one static dummy
    * (zero velocity, zero inverse mass) at static_index that stands for every
@@ -57,6 +59,39 @@ typedef struct tb_step_context {
    * the velocity in the position update; NULL in a step without deep overlap */
   float* push_velocities;
 } tb_step_context;
+
+/* The speed caps (tumble.h, maximum_linear_speed) hold for every moving body
+ * on every path: the solver's velocity and position updates, free motion
+ * under every integrator and its stages, kinematic bodies, and the velocities
+ * a step leaves. At most a quarter turn per step: beyond it a corner can
+ * swing through a thin wall between two collisions, and the sweep of the
+ * continuous pass no longer describes the motion. */
+#define TB_QUARTER_TURN 1.57079633f
+
+/* v, shortened to max_speed when longer. A non-finite v is returned as it is
+ * (the caller contains it); |v|^2 may overflow for a finite v, so the length
+ * is then taken of v scaled by its largest component. */
+static inline tb_vec2 tb_cap_linear_speed(tb_vec2 v, float max_speed) {
+  float speed_sq = v.x * v.x + v.y * v.y;
+  if (!(speed_sq > max_speed * max_speed) || !isfinite(v.x) || !isfinite(v.y)) return v;
+  float scale;
+  if (isfinite(speed_sq)) {
+    scale = max_speed / sqrtf(speed_sq);
+  } else {
+    float big = fmaxf(fabsf(v.x), fabsf(v.y));
+    float ux = v.x / big, uy = v.y / big;
+    scale = (max_speed / big) / sqrtf(ux * ux + uy * uy);
+  }
+  return (tb_vec2){scale * v.x, scale * v.y};
+}
+
+/* w within [-max, max]; a non-finite w is returned as it is. */
+static inline float tb_cap_angular_speed(float w, float max_speed) {
+  if (!isfinite(w)) return w;
+  if (w > max_speed) return max_speed;
+  if (w < -max_speed) return -max_speed;
+  return w;
+}
 
 struct tb_world;
 struct tb_body;

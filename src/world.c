@@ -69,6 +69,13 @@ static tb_result check_relax_iterations(tb_world* w, const char* fn, const char*
   return TB_OK;
 }
 
+static tb_result check_maximum_linear_speed(tb_world* w, const char* fn, const char* name, float speed) {
+  if (!(speed > 0.0f && speed <= TB_MAX_SPEED)) /* NaN fails too */
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and at most TB_MAX_SPEED (%g m/s)", fn, name,
+                   (double)speed, (double)TB_MAX_SPEED);
+  return TB_OK;
+}
+
 static tb_result check_integrator(tb_world* w, const char* fn, tb_integrator in) {
   if ((int)in < (int)TB_INTEGRATOR_SEMI_IMPLICIT_EULER || (int)in > (int)TB_INTEGRATOR_RK4)
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: integrator %d is not a tb_integrator", fn, (int)in);
@@ -90,7 +97,8 @@ tb_world_id tb_create_world(const tb_world_def* def) {
       tb_check_non_negative(NULL, "tb_create_world", "def->restitution_threshold", def->restitution_threshold) !=
           TB_OK ||
       check_relax_iterations(NULL, "tb_create_world", "def->relax_iterations", def->relax_iterations) != TB_OK ||
-      tb_check_positive(NULL, "tb_create_world", "def->maximum_linear_speed", def->maximum_linear_speed) != TB_OK)
+      check_maximum_linear_speed(NULL, "tb_create_world", "def->maximum_linear_speed", def->maximum_linear_speed) !=
+          TB_OK)
     return null_id;
   if (!tb_value_ok(def->hit_event_threshold) || def->hit_event_threshold < 0.0f) {
     tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_create_world: def->hit_event_threshold = %g must be >= 0 and finite",
@@ -286,11 +294,19 @@ bool tb_world_is_valid(tb_world_id id) {
 tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   tb_world* w = tb_world_get_unlocked(id, "tb_world_step");
   if (w == NULL) return tb_last_result();
-  if (!isfinite(time_step) || time_step <= 0.0f || time_step > 1.0f)
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_step: time_step = %g must be in (0, 1] seconds",
-                   (double)time_step);
+  if (!isfinite(time_step) || time_step <= 0.0f || time_step > TB_MAX_TIME_STEP)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT,
+                   "tb_world_step: time_step = %g must be in (0, TB_MAX_TIME_STEP = %g] seconds (longer steps are "
+                   "not stable: take several per frame)",
+                   (double)time_step, (double)TB_MAX_TIME_STEP);
   if (substeps < 1 || substeps > 64)
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "tb_world_step: substeps = %d must be in 1..64", substeps);
+  if (!(time_step / (float)substeps >= TB_MIN_SUBSTEP))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT,
+                   "tb_world_step: time_step = %g s in %d substeps is too short: a substep below TB_MIN_SUBSTEP "
+                   "(%g s) has a reciprocal the solver cannot use (it overflows, or turns distances into speeds "
+                   "beyond TB_MAX_VALUE)",
+                   (double)time_step, substeps, (double)TB_MIN_SUBSTEP);
   w->locked = true;
   w->begin_count = w->end_count = w->hit_count = 0;
   w->sensor_begin_count = w->sensor_end_count = 0;
@@ -465,7 +481,7 @@ tb_result tb_world_set_maximum_linear_speed(tb_world_id id, float speed) {
   const char* fn = "tb_world_set_maximum_linear_speed";
   tb_world* w = tb_world_get_unlocked(id, fn);
   if (w == NULL) return tb_last_result();
-  tb_result r = tb_check_positive(w, fn, "speed", speed);
+  tb_result r = check_maximum_linear_speed(w, fn, "speed", speed);
   if (r == TB_OK) w->maximum_linear_speed = speed;
   return r;
 }

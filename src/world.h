@@ -131,9 +131,10 @@ void tb_chains_free(tb_world* w);
 /* Shape AABBs and broad-phase proxies follow a body that moved. */
 void tb_body_update_proxies(tb_world* world, int body, tb_vec2 displacement);
 
-/* Free motion of one dynamic body over a step with the world's integrator
- * (motion.c). false when the new state is not finite (the body keeps its old one). */
-bool tb_integrate_free_body(tb_world* world, int body, float time_step, int substeps);
+/* Free motion of one dynamic body over a step with the world's integrator,
+ * within the step's speed caps (motion.c). false when a state is not finite
+ * (the body keeps its old one). */
+bool tb_integrate_free_body(tb_world* world, int body, const struct tb_step_context* ctx);
 /* The soft-step solver (solver.c): moves the awake bodies over one step;
  * returns how many got a non-finite state and were left as they were. */
 int tb_solve(tb_world* world, float time_step, int substeps);

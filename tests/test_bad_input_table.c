@@ -5,6 +5,7 @@
  * leaves tb_world_hash and the counts as they were. Also: stale and foreign
  * handles, calls into the world from inside callbacks, and a NaN from the
  * force field that must stay in its body. */
+#include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -219,9 +220,32 @@ START_TEST(world_settings) {
   /* the time step and the substeps at and around their limits */
   const float bad_steps[] = {0.0f, -0.0f, -1e-30f, 1.0000001f, NAN, -NAN};
   for (int i = 0; i < 6; ++i) REJECT(tb_world_step(W, bad_steps[i], 4), TB_ERR_INVALID_ARGUMENT, "time_step");
+  /* steps longer than the solver keeps stable (issue 23: up to 1 s was
+   * taken, and a car reached 1.6e13 m/s) */
+  const float long_steps[] = {nextafterf(TB_MAX_TIME_STEP, INFINITY), 0.1f, 0.5f, 1.0f};
+  for (int i = 0; i < 4; ++i)
+    for (int sub = 1; sub <= 64; sub *= 4)
+      REJECT(tb_world_step(W, long_steps[i], sub), TB_ERR_INVALID_ARGUMENT, "TB_MAX_TIME_STEP");
   const int bad_substeps[] = {0, -1, 65, 2147483647, -2147483647 - 1};
   for (int i = 0; i < 5; ++i)
     REJECT(tb_world_step(W, 1.0f / 60.0f, bad_substeps[i]), TB_ERR_INVALID_ARGUMENT, "substeps");
+  /* steps too short for the solver (issue 23): 1e-45 (whose reciprocal is
+   * infinite) and FLT_MIN were taken, and every step then failed with
+   * TB_ERR_NUMERIC; a substep below TB_MIN_SUBSTEP is refused, and the
+   * message says why. TB_MIN_SUBSTEP itself is accepted. */
+  const float short_steps[] = {1e-45f, FLT_MIN, 1e-20f, 0.5f * TB_MIN_SUBSTEP};
+  for (int i = 0; i < 4; ++i)
+    REJECT(tb_world_step(W, short_steps[i], 1), TB_ERR_INVALID_ARGUMENT, "below TB_MIN_SUBSTEP");
+  REJECT(tb_world_step(W, 2.0f * TB_MIN_SUBSTEP, 4), TB_ERR_INVALID_ARGUMENT, "4 substeps");
+  /* the speed cap beyond TB_MAX_SPEED, where a step can carry a body out of
+   * the world (it took up to TB_MAX_VALUE) */
+  const float fast[] = {nextafterf(TB_MAX_SPEED, INFINITY), 1e9f, TB_MAX_VALUE};
+  for (int i = 0; i < 3; ++i) {
+    REJECT(tb_world_set_maximum_linear_speed(W, fast[i]), TB_ERR_INVALID_ARGUMENT, "TB_MAX_SPEED");
+    tb_world_def wd = tb_default_world_def();
+    wd.maximum_linear_speed = fast[i];
+    REJECT(tb_create_world(&wd), TB_ERR_INVALID_ARGUMENT, "TB_MAX_SPEED");
+  }
   /* the relax passes: the same integer range checks, as setter and as field */
   const int bad_relax[] = {0, -1, TB_MAX_RELAX_ITERATIONS + 1, 2147483647, -2147483647 - 1};
   for (int i = 0; i < 5; ++i) {

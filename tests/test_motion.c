@@ -92,7 +92,7 @@ START_TEST(constant_spin) {
 END_TEST
 
 /* A force F at a world point p: torque T = r x F with r = p - X; after one
- * substep from rest V = h F / M and w = h T / I. */
+ * substep from rest V = h F / M and w = h T / I (h = 1/32 s). */
 START_TEST(force_at_point_gives_torque) {
   tb_world_id w = tbt_world(0.0f, 0.0f);
   tb_body_id b = tbt_box_body(w, 1.0f, 2.0f, 1.0f, 0.5f);
@@ -100,24 +100,24 @@ START_TEST(force_at_point_gives_torque) {
   ck_assert_int_eq(tb_body_apply_force(b, force, point), TB_OK);
   double rx = 0.5, ry = 0.5, torque = rx * force.y - ry * force.x;
   ck_assert_rel(tb_body_get_torque(b), torque, 1e-6);
-  ck_assert_int_eq(tb_world_step(w, 0.1f, 1), TB_OK);
-  double m = 2.0, inertia = m * (4.0 + 1.0) / 12.0;
-  ck_assert_rel(tb_body_get_angular_velocity(b), 0.1 * torque / inertia, 1e-6);
-  ck_assert_rel(tb_body_get_linear_velocity(b).x, 0.1 * 3.0 / m, 1e-6);
-  ck_assert_rel(tb_body_get_linear_velocity(b).y, 0.1 * -4.0 / m, 1e-6);
+  ck_assert_int_eq(tb_world_step(w, 1.0f / 32.0f, 1), TB_OK);
+  const double h = 1.0 / 32.0, m = 2.0, inertia = m * (4.0 + 1.0) / 12.0;
+  ck_assert_rel(tb_body_get_angular_velocity(b), h * torque / inertia, 1e-6);
+  ck_assert_rel(tb_body_get_linear_velocity(b).x, h * 3.0 / m, 1e-6);
+  ck_assert_rel(tb_body_get_linear_velocity(b).y, h * -4.0 / m, 1e-6);
   /* forces act over one step, then are cleared */
   ck_assert_float_eq(tb_body_get_torque(b), 0.0f);
   ck_assert_float_eq(tb_body_get_force(b).x, 0.0f);
   tb_vec2 v = tb_body_get_linear_velocity(b);
-  tb_world_step(w, 0.1f, 1);
+  tb_world_step(w, 1.0f / 32.0f, 1);
   ck_assert_float_eq(tb_body_get_linear_velocity(b).x, v.x);
   /* a pure torque and a force at the centre */
   tb_body_id c = tbt_box_body(w, -5.0f, 0.0f, 1.0f, 0.5f);
   tb_body_apply_torque(c, 2.0f);
   tb_body_apply_force_to_center(c, (tb_vec2){1.0f, 0.0f});
-  tb_world_step(w, 0.1f, 1);
-  ck_assert_rel(tb_body_get_angular_velocity(c), 0.1 * 2.0 / inertia, 1e-6);
-  ck_assert_rel(tb_body_get_linear_velocity(c).x, 0.1 / m, 1e-6);
+  tb_world_step(w, 1.0f / 32.0f, 1);
+  ck_assert_rel(tb_body_get_angular_velocity(c), h * 2.0 / inertia, 1e-6);
+  ck_assert_rel(tb_body_get_linear_velocity(c).x, h / m, 1e-6);
   tb_destroy_world(w);
 }
 END_TEST
@@ -217,13 +217,13 @@ START_TEST(gravity_scale_fixed_rotation_and_disabled) {
   tb_body_set_enabled(off, false);
   tb_body_apply_torque(fixed, 50.0f);
   ck_assert_int_eq(tb_body_set_angular_velocity(fixed, 3.0f), TB_OK);
-  tb_world_step(w, 0.5f, 1);
+  for (int i = 0; i < 16; ++i) tb_world_step(w, 1.0f / 32.0f, 1); /* 0.5 s */
   ck_assert_float_eq(tb_body_get_position(floating).y, 0.0f);
   ck_assert_rel(tb_body_get_linear_velocity(heavy).y, -10.0, 1e-6);
   ck_assert_float_eq(tb_body_get_angle(fixed), 0.0f);
   ck_assert_float_eq(tb_body_get_angular_velocity(fixed), 0.0f);
   ck_assert_float_eq(tb_body_get_position(off).x, 15.0f);
-  /* the weightless disc rested for TB_TIME_TO_SLEEP (the 0.5 s step) and fell
+  /* the weightless disc rested for TB_TIME_TO_SLEEP (0.5 s of steps) and fell
    * asleep; the disabled one is in no set */
   ck_assert_int_eq(tb_world_get_counts(w).awake_body_count, 2);
   ck_assert(!tb_body_is_awake(floating));
@@ -324,6 +324,106 @@ START_TEST(callbacks_cannot_change_the_world) {
 }
 END_TEST
 
+/* The speed caps hold for every body on every path (issue 23): a free body
+ * (no contact, no joint) under midpoint and RK4 kept 5,000 m/s and 1e5 rad/s,
+ * and a kinematic body any velocity. After one step each moves at most
+ * maximum_linear_speed and a quarter turn per step (pi / 2 / dt rad/s), and
+ * its centre moved at most dt times the cap. The cap scales v by cap / |v|:
+ * float rounding leaves |v| within a few ulps of the cap, so 1e-6 relative. */
+START_TEST(speed_caps_hold_for_free_and_kinematic_bodies) {
+  const float dt = 1.0f / 60.0f, cap = 1000.0f;
+  const double max_w = 0.5 * 3.14159265358979 / dt, slack = 1.0 + 1e-6;
+  for (int scheme = TB_INTEGRATOR_SEMI_IMPLICIT_EULER; scheme <= TB_INTEGRATOR_RK4; ++scheme) {
+    tb_world_id w = tbt_world(0.0f, -10.0f);
+    ck_assert_int_eq(tb_world_set_integrator(w, (tb_integrator)scheme), TB_OK);
+    tb_body_id free_disc = dynamic_disc(w, (tb_vec2){0, 0}, (tb_vec2){3000.0f, -4000.0f}, 1e5f);
+    tb_body_def bd = tb_default_body_def();
+    bd.type = TB_KINEMATIC_BODY;
+    bd.position = (tb_vec2){50.0f, 0.0f};
+    bd.linear_velocity = (tb_vec2){-5000.0f, 0.0f};
+    bd.angular_velocity = -1e5f;
+    tb_body_id kinematic = tb_create_body(w, &bd);
+    const tb_body_id bodies[2] = {free_disc, kinematic};
+    for (int step = 0; step < 3; ++step) {
+      tb_vec2 before[2] = {tb_body_get_position(free_disc), tb_body_get_position(kinematic)};
+      ck_assert_int_eq(tb_world_step(w, dt, 4), TB_OK);
+      for (int i = 0; i < 2; ++i) {
+        tb_vec2 v = tb_body_get_linear_velocity(bodies[i]), p = tb_body_get_position(bodies[i]);
+        double speed = hypot(v.x, v.y), moved = hypot(p.x - before[i].x, p.y - before[i].y);
+        ck_assert_msg(speed <= cap * slack, "scheme %d body %d: %g m/s", scheme, i, speed);
+        ck_assert_msg(speed >= cap / slack, "scheme %d body %d slowed to %g m/s", scheme, i, speed);
+        ck_assert_msg(moved <= cap * dt * slack, "scheme %d body %d moved %g m", scheme, i, moved);
+        ck_assert_msg(fabs(tb_body_get_angular_velocity(bodies[i])) <= max_w * slack, "scheme %d body %d: %g rad/s",
+                      scheme, i, (double)tb_body_get_angular_velocity(bodies[i]));
+      }
+    }
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
+/* The force field only ever sees finite states (issue 23). A force of 1e18 N
+ * on a body of 1e-30 kg is an acceleration of 1e48 m/s^2, beyond float: under
+ * midpoint and RK4 the first stage's velocity overflowed and the field was
+ * called with v = (inf, inf). Now the step stops at the stage, reports
+ * TB_ERR_NUMERIC and leaves the body as it was, as the solver does for a
+ * non-finite acceleration. */
+static int non_finite_states_seen;
+static void huge_push_field(double t, const tb_body_state* s, void* ctx, tb_vec2* force, float* torque) {
+  (void)t;
+  (void)ctx;
+  if (!isfinite(s->center.x) || !isfinite(s->center.y) || !isfinite(s->angle) || !isfinite(s->linear_velocity.x) ||
+      !isfinite(s->linear_velocity.y) || !isfinite(s->angular_velocity))
+    non_finite_states_seen += 1;
+  *force = (tb_vec2){1e18f, 1e18f};
+  *torque = 0.0f;
+}
+
+START_TEST(force_field_sees_only_finite_states) {
+  for (int scheme = TB_INTEGRATOR_SEMI_IMPLICIT_EULER; scheme <= TB_INTEGRATOR_RK4; ++scheme) {
+    tb_world_def def = tb_default_world_def();
+    def.integrator = (tb_integrator)scheme;
+    def.force_field = huge_push_field;
+    tb_world_id w = tb_create_world(&def);
+    tb_body_id b = dynamic_disc(w, (tb_vec2){1.0f, 2.0f}, (tb_vec2){3.0f, 0.0f}, 0.5f);
+    ck_assert_int_eq(tb_body_set_mass_data(b, (tb_mass_data){1e-30f, {0.0f, 0.0f}, 1e-30f}), TB_OK);
+    non_finite_states_seen = 0;
+    ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_ERR_NUMERIC);
+    ck_assert_int_eq(non_finite_states_seen, 0);
+    ck_assert_float_eq(tb_body_get_position(b).x, 1.0f);
+    ck_assert_float_eq(tb_body_get_position(b).y, 2.0f);
+    ck_assert_float_eq(tb_body_get_linear_velocity(b).x, 3.0f);
+    ck_assert_float_eq(tb_body_get_angular_velocity(b), 0.5f);
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
+/* The shortest accepted substep, TB_MIN_SUBSTEP, is usable (issue 23: 1e-45
+ * and FLT_MIN were accepted, then every step failed with TB_ERR_NUMERIC): a
+ * box resting on the ground and one sliding into it at the speed cap step
+ * without error, as one substep and as 64. */
+START_TEST(shortest_step_is_usable) {
+  const int substeps[2] = {1, 64};
+  for (int k = 0; k < 2; ++k) {
+    tb_world_id w = tbt_world(0.0f, -10.0f);
+    tb_body_def bd = tb_default_body_def();
+    tb_body_id ground = tb_create_body(w, &bd);
+    tb_polygon slab;
+    tb_make_offset_box(20.0f, 0.5f, (tb_vec2){0.0f, -0.5f}, 0.0f, &slab);
+    tb_shape_def sd = tb_default_shape_def();
+    tb_create_polygon_shape(ground, &sd, &slab);
+    tb_body_id resting = tbt_box_body(w, 0.0f, 0.49f, 0.5f, 0.5f); /* 1 cm deep */
+    tb_body_id sliding = tbt_box_body(w, 1.0f, 0.5f, 0.5f, 0.5f);  /* touching it */
+    tb_body_set_linear_velocity(sliding, (tb_vec2){-1000.0f, 0.0f});
+    for (int i = 0; i < 10; ++i)
+      ck_assert_int_eq(tb_world_step(w, TB_MIN_SUBSTEP * (float)substeps[k], substeps[k]), TB_OK);
+    ck_assert(isfinite(tb_body_get_position(resting).y) && isfinite(tb_body_get_position(sliding).x));
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
 static Suite* motion_suite(void) {
   Suite* s = suite_create("motion");
   TCase* tc = tcase_create("closed_forms");
@@ -338,6 +438,9 @@ static Suite* motion_suite(void) {
   tcase_add_test(tc, rk4_oscillator_energy);
   tcase_add_test(tc, nan_from_force_field_is_contained);
   tcase_add_test(tc, callbacks_cannot_change_the_world);
+  tcase_add_test(tc, speed_caps_hold_for_free_and_kinematic_bodies);
+  tcase_add_test(tc, force_field_sees_only_finite_states);
+  tcase_add_test(tc, shortest_step_is_usable);
   suite_add_tcase(s, tc);
   return s;
 }
