@@ -217,6 +217,7 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
     b->center = tb_lerp(b->center0, b->center, t);
     b->center_residual = (tb_vec2){0.0f, 0.0f};
     b->angle = b->angle0 + t * (b->angle - b->angle0);
+    b->angle_residual = 0.0f;
     tb_body_sync_transform(b);
   }
 }

@@ -5,8 +5,9 @@
  *
  * Semi-implicit (symplectic) Euler is the default and matches the constraint
  * solver: V += h a; V /= (1 + h c_v) (damping like Box2D); X += h V. The angle
- * is a scalar integrated the same way, so constant spin is exact up to float
- * rounding. Midpoint (RK2) and RK4 evaluate the ODE at intermediate states,
+ * is a scalar integrated the same way, summed in double and kept with a
+ * residual (tb_body_turn), so constant spin is exact up to the rounding of
+ * the float angle. Midpoint (RK2) and RK4 evaluate the ODE at intermediate states,
  * with damping as the linear term above; they pay off for smooth force fields. */
 #include <stddef.h>
 
@@ -15,7 +16,7 @@
 
 typedef struct state {
   tb_vec2 x; /* displacement from the centre at the step start (see center_residual) */
-  float a;
+  double a;  /* angle turned since the step start, summed in double (see tb_body_turn) */
   tb_vec2 v;
   float w;
 } state;
@@ -23,7 +24,7 @@ typedef struct state {
 /* dy/dt */
 typedef struct rate {
   tb_vec2 dx; /* = V */
-  float da;   /* = w */
+  double da;  /* = w (double: the Runge-Kutta sums of it stay exact) */
   tb_vec2 dv; /* acceleration */
   float dw;   /* angular acceleration */
 } rate;
@@ -41,7 +42,8 @@ static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* for
   *torque = c->body->torque;
   if (c->world->force_field != NULL) {
     const tb_body* b = c->body;
-    tb_body_state s = {c->id, tb_add(b->center, y->x), y->a, y->v, y->w, b->mass, b->inertia, b->user_data};
+    tb_body_state s = {c->id,       tb_add(b->center, y->x), b->angle + (float)y->a, y->v, y->w, b->mass, b->inertia,
+                       b->user_data};
     tb_vec2 f = {0.0f, 0.0f};
     float tq = 0.0f;
     c->world->force_field(t, &s, c->world->force_field_context, &f, &tq);
@@ -61,12 +63,14 @@ static rate derivative(const body_ctx* c, double t, const state* y) {
   return (rate){y->v, y->w, acc, alpha};
 }
 
-/* y + h d */
-static state advance(const state* y, float h, const rate* d) {
-  return (state){tb_mul_add(y->x, h, d->dx), y->a + h * d->da, tb_mul_add(y->v, h, d->dv), y->w + h * d->dw};
+/* y + h d (h exact in double for the angle, rounded to float for the rest) */
+static state advance(const state* y, double h, const rate* d) {
+  float hf = (float)h;
+  return (state){tb_mul_add(y->x, hf, d->dx), y->a + h * d->da, tb_mul_add(y->v, hf, d->dv), y->w + hf * d->dw};
 }
 
-static void step_euler(const body_ctx* c, double t, float h, state* y) {
+static void step_euler(const body_ctx* c, double t, double exact_h, state* y) {
+  float h = (float)exact_h;
   tb_vec2 f;
   float tq;
   total_load(c, t, y, &f, &tq);
@@ -76,31 +80,31 @@ static void step_euler(const body_ctx* c, double t, float h, state* y) {
   y->v = tb_scale(1.0f / (1.0f + h * b->linear_damping), y->v);
   y->w *= 1.0f / (1.0f + h * b->angular_damping);
   y->x = tb_mul_add(y->x, h, y->v);
-  y->a += h * y->w;
+  y->a += exact_h * (double)y->w;
 }
 
-static void step_midpoint(const body_ctx* c, double t, float h, state* y) {
+static void step_midpoint(const body_ctx* c, double t, double h, state* y) {
   rate k1 = derivative(c, t, y);
-  state mid = advance(y, 0.5f * h, &k1);
+  state mid = advance(y, 0.5 * h, &k1);
   rate k2 = derivative(c, t + 0.5 * h, &mid);
   *y = advance(y, h, &k2);
 }
 
-static void step_rk4(const body_ctx* c, double t, float h, state* y) {
+static void step_rk4(const body_ctx* c, double t, double h, state* y) {
   rate k1 = derivative(c, t, y);
-  state y2 = advance(y, 0.5f * h, &k1);
+  state y2 = advance(y, 0.5 * h, &k1);
   rate k2 = derivative(c, t + 0.5 * h, &y2);
-  state y3 = advance(y, 0.5f * h, &k2);
+  state y3 = advance(y, 0.5 * h, &k2);
   rate k3 = derivative(c, t + 0.5 * h, &y3);
   state y4 = advance(y, h, &k3);
   rate k4 = derivative(c, t + h, &y4);
   /* y += h/6 (k1 + 2 k2 + 2 k3 + k4) */
   rate sum = {
       {k1.dx.x + 2.0f * k2.dx.x + 2.0f * k3.dx.x + k4.dx.x, k1.dx.y + 2.0f * k2.dx.y + 2.0f * k3.dx.y + k4.dx.y},
-      k1.da + 2.0f * k2.da + 2.0f * k3.da + k4.da,
+      k1.da + 2.0 * k2.da + 2.0 * k3.da + k4.da,
       {k1.dv.x + 2.0f * k2.dv.x + 2.0f * k3.dv.x + k4.dv.x, k1.dv.y + 2.0f * k2.dv.y + 2.0f * k3.dv.y + k4.dv.y},
       k1.dw + 2.0f * k2.dw + 2.0f * k3.dw + k4.dw};
-  *y = advance(y, h / 6.0f, &sum);
+  *y = advance(y, h / 6.0, &sum);
 }
 
 static bool state_finite(const state* y) {
@@ -108,9 +112,9 @@ static bool state_finite(const state* y) {
 }
 
 bool tb_integrate_free_body(tb_world* w, int index, float dt, int substeps) {
-  float h = dt / (float)substeps;
+  double h = (double)dt / (double)substeps;
   tb_body* b = tb_body_at(w, index);
-  state y = {{0.0f, 0.0f}, b->angle, b->linear_velocity, b->angular_velocity};
+  state y = {{0.0f, 0.0f}, 0.0, b->linear_velocity, b->angular_velocity};
   body_ctx c = {w, b, tb_make_body_id(w, index), tb_scale(b->gravity_scale, w->gravity)};
   for (int k = 0; k < substeps; ++k) {
     double t = w->time + (double)k * h;
@@ -123,7 +127,7 @@ bool tb_integrate_free_body(tb_world* w, int index, float dt, int substeps) {
   if (b->fixed_rotation) y.w = 0.0f;
   if (!state_finite(&y)) return false; /* contain the NaN: this body keeps its old state */
   b->center = tb_two_sum(b->center, tb_add(b->center_residual, y.x), &b->center_residual);
-  b->angle = y.a;
+  b->angle = tb_body_turn(b->angle, &b->angle_residual, y.a);
   b->linear_velocity = y.v;
   b->angular_velocity = y.w;
   tb_body_sync_transform(b);

@@ -111,6 +111,7 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
     s->dp = tb_mul_add(s->dp, h, v);
     float dw = h * omega;
     s->da += dw;
+    s->turned += ctx->exact_h * (double)omega;
     /* q <- normalise(q + h w perp(q)): the rotation the anchors see; the angle
      * itself is the exact scalar sum da */
     tb_rot q = {s->dq.c - dw * s->dq.s, s->dq.s + dw * s->dq.c};
@@ -209,6 +210,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.inv_dt = 1.0f / dt;
   ctx.h = h;
   ctx.inv_h = 1.0f / h;
+  ctx.exact_h = (double)dt / (double)substeps;
   ctx.substeps = substeps;
   float most_hertz = TB_CONTACT_MAX_H_OMEGA / (TB_TWO_PI_F * h);
   ctx.contact_hertz = fminf(w->contact_hertz, most_hertz);
@@ -230,9 +232,14 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   for (int i = 0; i < n; ++i) {
     tb_body* b = tb_body_at(w, w->awake[i]);
     bool dynamic = b->type == TB_DYNAMIC_BODY;
-    w->states[i] = (tb_solver_body){
-        b->linear_velocity, b->angular_velocity, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f,
-        {0.0f, 0.0f},       {1.0f, 0.0f}};
+    w->states[i] = (tb_solver_body){b->linear_velocity,
+                                    b->angular_velocity,
+                                    dynamic ? b->inv_mass : 0.0f,
+                                    dynamic ? b->inv_inertia : 0.0f,
+                                    0.0f,
+                                    {0.0f, 0.0f},
+                                    {1.0f, 0.0f},
+                                    0.0};
     tb_body_motion* m = &motions[i];
     m->flags = 0;
     if (dynamic) {
@@ -244,7 +251,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       if (!tb_vec_finite(m->accel) || !isfinite(m->alpha)) m->flags |= MOTION_FAULT | MOTION_FREE;
     }
   }
-  w->states[n] = (tb_solver_body){{0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
+  w->states[n] = (tb_solver_body){{0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}, 0.0};
 
   /* Midpoint and RK4 are for free flight: bodies without contacts or joints
    * this step use them; constrained bodies use the solver's symplectic Euler. */
@@ -306,7 +313,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       /* compensated: c + residual = center + (residual + dp) exactly */
       tb_vec2 residual;
       tb_vec2 c = tb_two_sum(b->center, tb_add(b->center_residual, s->dp), &residual);
-      float a = b->angle + s->da;
+      float angle_residual = b->angle_residual;
+      float a = tb_body_turn(b->angle, &angle_residual, s->turned);
       if ((m->flags & MOTION_FAULT) || !tb_vec_finite(c) || !isfinite(a) || !tb_vec_finite(s->v) || !isfinite(s->w)) {
         bad += 1; /* contained: the body keeps its state from before the step */
         continue;
@@ -314,6 +322,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       b->center = c;
       b->center_residual = residual;
       b->angle = a;
+      b->angle_residual = angle_residual;
       b->linear_velocity = s->v;
       b->angular_velocity = s->w;
       tb_body_sync_transform(b);

@@ -19,6 +19,10 @@ typedef struct tb_solver_body {
   float da;   /* angle turned since the step began (exact scalar sum of h w) */
   tb_vec2 dp; /* displacement of the centre of mass since the step began */
   tb_rot dq;  /* rotation since the step began, as a unit complex number */
+  /* da summed in double, with the exact substep dt / substeps: float da
+   * rounds once per substep (and h = fl(dt / n), h w round too), which in a
+   * free spin adds up over the steps; the body's angle takes this one */
+  double turned;
 } tb_solver_body;
 
 /* A soft constraint (Catto, "Solver2D"): a spring of frequency f and damping
@@ -38,6 +42,7 @@ static inline tb_softness tb_rigid_softness(void) { return (tb_softness){0.0f, 1
 typedef struct tb_step_context {
   float dt, inv_dt; /* the whole step */
   float h, inv_h;   /* one substep */
+  double exact_h;   /* dt / substeps in double (the angle's exact sum) */
   int substeps;
   float contact_hertz, static_hertz; /* dynamic against dynamic, against static/kinematic (after the cap) */
   float contact_damping_ratio;

@@ -636,6 +636,7 @@ static void hash_body(hasher* s, const tb_world* w, int i) {
   hash_vec(s, b->local_center);
   hash_vec(s, b->linear_velocity);
   hash_vec(s, b->force);
+  hash_float(s, b->angle_residual);
   const float f[] = {b->angle,           b->angular_velocity, b->torque,      b->mass,
                      b->inv_mass,        b->inertia,          b->inv_inertia, b->linear_damping,
                      b->angular_damping, b->gravity_scale,    b->sleep_time,  b->sleep_threshold,

@@ -577,6 +577,7 @@ START_TEST(carried_state_is_hashed) {
   tb_body* b = tb_body_at(w, s.box.index1 - 1);
   POKE(float, b->sleep_time, b->sleep_time + 0.25f);
   POKE(float, b->center_residual.x, b->center_residual.x + 1.0e-9f);
+  POKE(float, b->angle_residual, b->angle_residual + 1.0e-9f);
   POKE(int, w->awake[0], w->awake[1]);
   /* the fat box of the box's proxy */
   const tb_shape* sh = tb_shape_at(w, s.box_shape.index1 - 1);
