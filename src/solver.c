@@ -39,6 +39,12 @@ typedef struct tb_body_motion {
   float linear_damping; /* 1 / (1 + h c) */
   float angular_damping;
   int flags;
+  /* the angle turned since the step began, as da but summed in double with
+   * the exact substep dt / substeps: float da rounds once per substep (and
+   * h = fl(dt / n) and h w round), which in a free spin adds up over the
+   * steps; the body's angle takes this one (tb_body_turn). Kept here, not in
+   * the solver body, whose layout the contact solver's gather reads. */
+  double turned;
 } tb_body_motion;
 
 enum { MOTION_FIELD = 1, MOTION_FREE = 2, MOTION_FAULT = 4, MOTION_DYNAMIC = 8 };
@@ -95,7 +101,7 @@ static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_moti
   }
 }
 
-static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body_motion* motions) {
+static void integrate_positions(tb_world* w, tb_step_context* ctx, tb_body_motion* motions) {
   tb_solver_body* states = ctx->states;
   float h = ctx->h;
   for (int i = 0; i < w->awake_count; ++i) {
@@ -111,7 +117,7 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
     s->dp = tb_mul_add(s->dp, h, v);
     float dw = h * omega;
     s->da += dw;
-    s->turned += ctx->exact_h * (double)omega;
+    motions[i].turned += ctx->exact_h * (double)omega;
     /* q <- normalise(q + h w perp(q)): the rotation the anchors see; the angle
      * itself is the exact scalar sum da */
     tb_rot q = {s->dq.c - dw * s->dq.s, s->dq.s + dw * s->dq.c};
@@ -232,16 +238,12 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   for (int i = 0; i < n; ++i) {
     tb_body* b = tb_body_at(w, w->awake[i]);
     bool dynamic = b->type == TB_DYNAMIC_BODY;
-    w->states[i] = (tb_solver_body){b->linear_velocity,
-                                    b->angular_velocity,
-                                    dynamic ? b->inv_mass : 0.0f,
-                                    dynamic ? b->inv_inertia : 0.0f,
-                                    0.0f,
-                                    {0.0f, 0.0f},
-                                    {1.0f, 0.0f},
-                                    0.0};
+    w->states[i] = (tb_solver_body){
+        b->linear_velocity, b->angular_velocity, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f,
+        {0.0f, 0.0f},       {1.0f, 0.0f}};
     tb_body_motion* m = &motions[i];
     m->flags = 0;
+    m->turned = 0.0;
     if (dynamic) {
       m->flags = MOTION_DYNAMIC | (field ? MOTION_FIELD : 0);
       m->accel = tb_mul_add(tb_scale(b->gravity_scale, w->gravity), b->inv_mass, b->force);
@@ -251,7 +253,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       if (!tb_vec_finite(m->accel) || !isfinite(m->alpha)) m->flags |= MOTION_FAULT | MOTION_FREE;
     }
   }
-  w->states[n] = (tb_solver_body){{0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}, 0.0};
+  w->states[n] = (tb_solver_body){{0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
 
   /* Midpoint and RK4 are for free flight: bodies without contacts or joints
    * this step use them; constrained bodies use the solver's symplectic Euler. */
@@ -314,7 +316,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       tb_vec2 residual;
       tb_vec2 c = tb_two_sum(b->center, tb_add(b->center_residual, s->dp), &residual);
       float angle_residual = b->angle_residual;
-      float a = tb_body_turn(b->angle, &angle_residual, s->turned);
+      float a = tb_body_turn(b->angle, &angle_residual, m->turned);
       if ((m->flags & MOTION_FAULT) || !tb_vec_finite(c) || !isfinite(a) || !tb_vec_finite(s->v) || !isfinite(s->w)) {
         bad += 1; /* contained: the body keeps its state from before the step */
         continue;

@@ -19,10 +19,6 @@ typedef struct tb_solver_body {
   float da;   /* angle turned since the step began (exact scalar sum of h w) */
   tb_vec2 dp; /* displacement of the centre of mass since the step began */
   tb_rot dq;  /* rotation since the step began, as a unit complex number */
-  /* da summed in double, with the exact substep dt / substeps: float da
-   * rounds once per substep (and h = fl(dt / n), h w round too), which in a
-   * free spin adds up over the steps; the body's angle takes this one */
-  double turned;
 } tb_solver_body;
 
 /* A soft constraint (Catto, "Solver2D"): a spring of frequency f and damping
