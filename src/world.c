@@ -668,7 +668,8 @@ static void hash_contact(hasher* s, int i, const tb_contact* c) {
   hash_int(s, c->shape_a);
   hash_int(s, c->shape_b);
   hash_int(s, (int)c->flags);
-  const float f[] = {c->friction, c->restitution, c->rolling_resistance, c->tangent_speed, c->rolling_impulse};
+  const float f[] = {c->friction,      c->restitution,     c->rolling_resistance,
+                     c->tangent_speed, c->rolling_impulse, c->impact_depth};
   hash_floats(s, f, sizeof f / sizeof f[0]);
   const tb_manifold* m = &c->manifold;
   hash_vec(s, m->normal);

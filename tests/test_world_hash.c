@@ -565,6 +565,7 @@ START_TEST(carried_state_is_hashed) {
   POKE(float, c->manifold.points[0].tangent_impulse, c->manifold.points[0].tangent_impulse + 1.0f);
   POKE(uint32_t, c->manifold.points[0].id, c->manifold.points[0].id + 1u);
   POKE(float, c->rolling_impulse, c->rolling_impulse + 1.0f);
+  POKE(float, c->impact_depth, c->impact_depth + 1.0e-3f);
   POKE(float, c->friction, c->friction + 1.0f);
   POKE(uint32_t, c->flags, c->flags ^ (uint32_t)TB_CONTACT_ENABLED);
   /* a joint's accumulated impulses and the substep they belong to */
