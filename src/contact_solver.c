@@ -70,17 +70,17 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
  * constraint; a contact with one point has an inert second point (no mass,
  * far apart) so that every lane has two. */
 typedef struct tb_wide_point {
-  tb_f4 rax, ray, rbx, rby; /* anchors from each centre of mass, world-oriented, at step start */
-  tb_f4 base_separation;    /* s0, the separation at the step start */
-  tb_f4 push_depth;         /* the soft push acts down to this depth, the push-out beyond */
+  tb_f4 rax, ray, rbx, rby;                 /* anchors from each centre of mass, world-oriented, at step start */
+  tb_f4 now_rax, now_ray, now_rbx, now_rby; /* the arms to the common point now (see arms_now) */
+  tb_f4 live;                               /* 1 for a point of the manifold, 0 for an inert one */
+  tb_f4 base_separation;                    /* s0, the separation at the step start */
+  tb_f4 push_depth;                         /* the soft push acts down to this depth, the push-out beyond */
   tb_f4 normal_mass, tangent_mass;
   tb_f4 normal_impulse, tangent_impulse, max_normal_impulse;
   /* the normal impulses applied in the step, summed, and summed times the
    * arms they were applied at (restitution's J_e) */
   tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
-  /* the common point (see arms_now): its share of the relative motion per
-   * arm, and 1 where it is a vertex that turns with its body */
-  tb_f4 shift_a, shift_b, material;
+  tb_f4 shift_a, shift_b; /* the common point's share of the relative displacement, per arm (see arms_now) */
 } tb_wide_point;
 
 typedef struct tb_wide_contact {
@@ -221,6 +221,43 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
   return blend(x > zero, splat(1.0f) / x, zero);
 }
 
+/* The effective masses of a block's points at their arms now: normal and
+ * tangent mass of each point, and the 2x2 effective mass of the two normal
+ * impulses, K_ij = J_i M^-1 J_j^T, with its inverse. Like Box2D 2.4, points
+ * so close together that K is near singular (condition number over ~1000)
+ * are solved one after the other. */
+static inline void set_masses(tb_wide_contact* wc) {
+  const tb_f4 zero = splat(0.0f), one = splat(1.0f);
+  tb_f4 ma = wc->ma, mb = wc->mb, ja = wc->ja, jb = wc->jb, nx = wc->nx, ny = wc->ny, tx = ny, ty = -nx;
+  tb_f4 rn[2][2]; /* r x n of each point at A and B, for the block terms */
+  for (int p = 0; p < 2; ++p) {
+    tb_wide_point* wp = &wc->p[p];
+    tb_i4 live = wp->live > zero;
+    tb_f4 rax = wp->now_rax, ray = wp->now_ray, rbx = wp->now_rbx, rby = wp->now_rby;
+    tb_f4 rna = rax * ny - ray * nx, rnb = rbx * ny - rby * nx;
+    tb_f4 rta = rax * ty - ray * tx, rtb = rbx * ty - rby * tx;
+    wp->normal_mass = blend(live, inverse_or_zero(ma + mb + ja * rna * rna + jb * rnb * rnb), zero);
+    wp->tangent_mass = blend(live, inverse_or_zero(ma + mb + ja * rta * rta + jb * rtb * rtb), zero);
+    rn[p][0] = blend(live, rna, zero);
+    rn[p][1] = blend(live, rnb, zero);
+  }
+  tb_f4 r1a = rn[0][0], r1b = rn[0][1], r2a = rn[1][0], r2b = rn[1][1];
+  tb_i4 two = wc->p[1].live > zero;
+  tb_f4 k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
+  tb_f4 k22 = blend(two, ma + mb + ja * r2a * r2a + jb * r2b * r2b, zero);
+  tb_f4 k12 = blend(two, ma + mb + ja * r1a * r2a + jb * r1b * r2b, zero);
+  tb_f4 det = k11 * k22 - k12 * k12;
+  tb_i4 block = two & (k11 * k11 < splat(1000.0f) * det);
+  tb_f4 inv = one / det;
+  wc->k11 = k11;
+  wc->k12 = k12;
+  wc->k22 = k22;
+  wc->n11 = blend(block, inv * k22, zero);
+  wc->n12 = blend(block, -inv * k12, zero);
+  wc->n22 = blend(block, inv * k11, zero);
+  wc->block = blend(block, one, zero);
+}
+
 /* Prepares the constraints of one block's contacts, four lanes at a time
  * (the same float operations for each lane as for one contact alone).
  * k[lane] is the step contact of a lane, -1 for an unused one (cleared
@@ -241,7 +278,6 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wide_body A = gather(ctx->states, wc->a), B = gather(ctx->states, wc->b);
   tb_f4 ma = A.inv_mass, mb = B.inv_mass, ja = A.inv_inertia, jb = B.inv_inertia;
   tb_f4 nx = LANES(c, manifold.normal.x), ny = LANES(c, manifold.normal.y);
-  tb_f4 tx = ny, ty = -nx; /* tb_right_perp(n) */
   tb_i4 point_count = INT_LANES(c, manifold.point_count);
   tb_f4 rolling_resistance = LANES(c, rolling_resistance);
   wc->nx = nx;
@@ -266,7 +302,6 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI_F * ctx->static_hertz), splat(TB_TWO_PI_F * ctx->contact_hertz));
   wc->bias_rate = blend(rigid_other, splat(ctx->static_softness.bias_rate), splat(ctx->contact_softness.bias_rate));
   wc->mass_scale = blend(rigid_other, splat(ctx->static_softness.mass_scale), splat(ctx->contact_softness.mass_scale));
-  tb_f4 rn[2][2];    /* r x n of each point at A and B, for the block terms */
   tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* wp = &wc->p[p];
@@ -274,25 +309,22 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     /* ra = point - centre of A, rb likewise; r x n and r x t (tb_cross) */
     tb_f4 rax = LANES(c, manifold.points[p].point.x) - cax, ray = LANES(c, manifold.points[p].point.y) - cay;
     tb_f4 rbx = LANES(c, manifold.points[p].point.x) - cbx, rby = LANES(c, manifold.points[p].point.y) - cby;
-    tb_f4 rna = rax * ny - ray * nx, rnb = rbx * ny - rby * nx;
-    tb_f4 rta = rax * ty - ray * tx, rtb = rbx * ty - rby * tx;
-    tb_f4 normal_mass = inverse_or_zero(ma + mb + ja * rna * rna + jb * rnb * rnb);
-    tb_f4 tangent_mass = inverse_or_zero(ma + mb + ja * rta * rta + jb * rtb * rtb);
     tb_f4 normal_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].normal_impulse) : zero;
     tb_f4 tangent_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].tangent_impulse) : zero;
     wp->rax = blend(used, rax, zero);
     wp->ray = blend(used, ray, zero);
     wp->rbx = blend(used, rbx, zero);
     wp->rby = blend(used, rby, zero);
-    rn[p][0] = blend(used, rna, zero);
-    rn[p][1] = blend(used, rnb, zero);
+    wp->now_rax = wp->rax;
+    wp->now_ray = wp->ray;
+    wp->now_rbx = wp->rbx;
+    wp->now_rby = wp->rby;
+    wp->live = blend(used, one, zero);
     /* the manifold is of the float centres; the true gap adds the bodies'
      * center_residual along the normal */
     tb_f4 residual_gap = (LANES(bb, center_residual.x) - LANES(ba, center_residual.x)) * nx +
                          (LANES(bb, center_residual.y) - LANES(ba, center_residual.y)) * ny;
     wp->base_separation = blend(used, LANES(c, manifold.points[p].separation) + residual_gap, one);
-    wp->normal_mass = blend(used, normal_mass, zero);
-    wp->tangent_mass = blend(used, tangent_mass, zero);
     wp->normal_impulse = blend(used, normal_impulse, zero);
     wp->tangent_impulse = blend(used, tangent_impulse, zero);
     wp->max_normal_impulse = zero;
@@ -304,35 +336,19 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_i4 id = INT_LANES(c, manifold.points[p].id);
     const tb_i4 bit = {1, 1, 1, 1};
     tb_i4 edge_a = (id >> 16) & bit, edge_b = (id >> 24) & bit;
-    tb_i4 vertex_b = both_move & (edge_a == bit) & (edge_b != bit),
-          vertex_a = both_move & (edge_a != bit) & (edge_b == bit);
+    tb_i4 vertex_b = both_move & (edge_a == bit) & (edge_b != bit);
+    tb_i4 vertex_a = both_move & (edge_a != bit) & (edge_b == bit);
     tb_f4 beta = blend(vertex_b, one, blend(vertex_a, zero, mass_share));
     wp->shift_a = beta;
     wp->shift_b = beta - one;
-    wp->material = blend(vertex_a | vertex_b, one, zero);
     /* (v_B + w_B x rb - v_A - w_A x ra) . n */
     tb_f4 vax = A.vx + -A.w * ray, vay = A.vy + A.w * rax;
     tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
     approach[p] = blend(used, nx * (vbx - vax) + ny * (vby - vay), zero);
   }
-  /* the 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
-   * and its inverse. Like Box2D 2.4, points so close together that K is near
-   * singular (condition number over ~1000) are solved one after the other. */
-  tb_f4 r1a = rn[0][0], r1b = rn[0][1], r2a = rn[1][0], r2b = rn[1][1];
-  tb_i4 two = point_count >= (tb_i4){2, 2, 2, 2};
-  tb_f4 k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
-  tb_f4 k22 = blend(two, ma + mb + ja * r2a * r2a + jb * r2b * r2b, zero);
-  tb_f4 k12 = blend(two, ma + mb + ja * r1a * r2a + jb * r1b * r2b, zero);
-  tb_f4 det = k11 * k22 - k12 * k12;
-  tb_i4 block = two & (k11 * k11 < splat(1000.0f) * det);
-  tb_f4 inv = one / det;
-  wc->k11 = k11;
-  wc->k12 = k12;
-  wc->k22 = k22;
-  wc->n11 = blend(block, inv * k22, zero);
-  wc->n12 = blend(block, -inv * k12, zero);
-  wc->n22 = blend(block, inv * k11, zero);
-  wc->block = blend(block, one, zero);
+  set_masses(wc);
+  tb_f4 k11 = wc->k11, k12 = wc->k12, k22 = wc->k22;
+  tb_i4 block = wc->block > zero;
   /* The soft push acts down to the depth at which the points' load (their
    * warm start) rests on the springs, plus TB_DEEP_OVERLAP; what lies deeper,
    * an overlap the load does not explain, is the push-out's. The springs hold
@@ -485,43 +501,42 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
  * orientation, but the centres move with the substeps: arms fixed to the
  * bodies put the two bodies' ends of an impulse d = dp_B - dp_A apart, and
  * each impulse P added the torque d x P that nothing pays for (two boxes
- * sliding past each other changed their angular momentum by 4 to 15%). With
- * u_A, u_B the motion of each body's point since the step began, the common
- * point moves by (1 - beta) u_A + beta u_B:
- *   r_A = r_A0 + (u_A - dp_A) + beta D,  r_B = r_B0 + (u_B - dp_B) - (1 - beta) D,
- *   D = u_B - u_A,
+ * sliding past each other changed their angular momentum by 4 to 15%). The
+ * common point is the manifold point moved by (1 - beta) dp_A + beta dp_B:
+ *   r_A = r_A0 + beta d,  r_B = r_B0 - (1 - beta) d,
  * so x_A + r_A = x_B + r_B and P at r_A, -P at r_B turn nothing. Where the
- * point is a vertex of one dynamic body on an edge of the other (feature id),
- * it is that vertex: beta = 1 or 0, and u = dp + da x r0 of its body (the
- * corner of a box on a box stays where it rests while its box rocks; moving
- * it with the centre let a column sway). Elsewhere (round shapes, whose
- * point is no material point, and against a static or kinematic body) u =
- * dp and beta = m_B / (m_A + m_B) by the inverse masses: against a body
- * that does not move the point keeps the dynamic body's step start arm, as
- * a box sliding on the ground needs. The effective masses stay those of the
- * step start's arms (D is at most the sliding of one step, a few cm against
- * arms of decimetres): they set how fast the passes converge, not what the
- * impulses conserve. D is followed only up to the smaller body's extent (per
- * axis): a body that slides further than its own size in one step (a bullet
- * along a plank) has left the step start's manifold point, and arms that
- * followed it off the other body's surface spun the plank out of the
- * bullet's way. */
+ * point is a vertex of one dynamic body on an edge of the other (feature
+ * id), it moves with that vertex's body: beta = 1 for a vertex of B, 0 for
+ * one of A (with the mass-weighted beta below, the two-point bounces of a
+ * capsule on a polygon lost 1.6% of their energy). Elsewhere (round shapes,
+ * and against a static or kinematic body) beta = m_B / (m_A + m_B) by the
+ * inverse masses: against a body that does not move the point keeps the
+ * dynamic body's step start arm, as a box sliding on the ground needs. The
+ * arms' turn with their bodies is left out, as in the separation (see the
+ * top of this file; with it, fast spinning debris blew up). The effective
+ * masses follow the arms (tb_contact_solver_update_arms). d is followed only
+ * up to the smaller body's extent (per axis): a body that slides further
+ * than its own size in one step (a bullet along a plank) has left the step
+ * start's manifold point, and arms that followed it off the other body's
+ * surface spun the plank out of the bullet's way. */
 typedef struct wide_arms {
   tb_f4 rax, ray, rbx, rby;
 } wide_arms;
 
 static inline wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
                                  const wide_body* B) {
-  /* u - dp: the vertex's turn da x r0 (as tb_cross_sv), where the point is one */
-  tb_f4 tax = -A->da * cp->ray * cp->material, tay = A->da * cp->rax * cp->material;
-  tb_f4 tbx = -B->da * cp->rby * cp->material, tby = B->da * cp->rbx * cp->material;
-  tb_f4 dx = min4(max4((B->dpx + tbx) - (A->dpx + tax), -c->shift_limit), c->shift_limit);
-  tb_f4 dy = min4(max4((B->dpy + tby) - (A->dpy + tay), -c->shift_limit), c->shift_limit);
-  return (wide_arms){cp->rax + tax + cp->shift_a * dx, cp->ray + tay + cp->shift_a * dy,
-                     cp->rbx + tbx + cp->shift_b * dx, cp->rby + tby + cp->shift_b * dy};
+  tb_f4 dx = min4(max4(B->dpx - A->dpx, -c->shift_limit), c->shift_limit);
+  tb_f4 dy = min4(max4(B->dpy - A->dpy, -c->shift_limit), c->shift_limit);
+  return (wide_arms){cp->rax + cp->shift_a * dx, cp->ray + cp->shift_a * dy, cp->rbx + cp->shift_b * dx,
+                     cp->rby + cp->shift_b * dy};
 }
 
-/* Keeps count of a normal impulse applied at these arms (see apply_restitution). */
+/* The arms stored by tb_contact_solver_update_arms (or prepare). */
+static inline wide_arms stored_arms(const tb_wide_point* cp) {
+  return (wide_arms){cp->now_rax, cp->now_ray, cp->now_rbx, cp->now_rby};
+}
+
+/* Keeps count of a normal impulse applied at these arms (see restitution_targets). */
 static inline void count_normal(tb_wide_point* cp, const wide_arms* arms, tb_f4 impulse) {
   cp->applied += impulse;
   cp->applied_rax += impulse * arms->rax;
@@ -549,11 +564,11 @@ static inline void relative_velocity(const wide_arms* cp, const wide_body* A, co
 }
 
 static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
-  wide_body A = gather(states, c->a), B = gather(states, c->b);
+  wide_body A = gather_velocities(states, c->a), B = gather_velocities(states, c->b);
   tb_f4 tx = c->ny, ty = -c->nx;
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
-    wide_arms arms = arms_now(c, cp, &A, &B);
+    wide_arms arms = stored_arms(cp);
     count_normal(cp, &arms, cp->normal_impulse);
     tb_f4 Px = cp->normal_impulse * c->nx + cp->tangent_impulse * tx;
     tb_f4 Py = cp->normal_impulse * c->ny + cp->tangent_impulse * ty;
@@ -618,7 +633,7 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
    * Since mass_scale + impulse_scale = 1, the soft update of one point,
    * a - m_n mass_scale (v_n + bias) - impulse_scale a, is the same as
    * x = -mass_scale m_n r: a new total that does not depend on a. */
-  wide_arms arms1 = arms_now(c, p1, &A, &B), arms2 = arms_now(c, p2, &A, &B);
+  wide_arms arms1 = stored_arms(p1), arms2 = stored_arms(p2);
   tb_f4 ms1, ms2;
   tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, inv_h, push, use_bias, &ms1);
   tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, inv_h, push, use_bias, &ms2);
@@ -766,6 +781,26 @@ void tb_contact_solver_warm_start(tb_world* w, tb_step_context* ctx) {
   for (int b = 0; b < w->wide_count; ++b) warm_start_wide(&wide[b], ctx->states);
 }
 
+/* After the positions moved: each point's arms to its common point now, and
+ * the effective masses there (the passes' impulses must not overshoot when
+ * the arms grew; with the step start's masses, fast spinning debris blew up). */
+void tb_contact_solver_update_arms(tb_world* w, tb_step_context* ctx) {
+  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+  for (int b = 0; b < w->wide_count; ++b) {
+    tb_wide_contact* c = &wide[b];
+    wide_body A = gather(ctx->states, c->a), B = gather(ctx->states, c->b);
+    for (int p = 0; p < 2; ++p) {
+      tb_wide_point* cp = &c->p[p];
+      wide_arms arms = arms_now(c, cp, &A, &B);
+      cp->now_rax = arms.rax;
+      cp->now_ray = arms.ray;
+      cp->now_rbx = arms.rbx;
+      cp->now_rby = arms.rby;
+    }
+    set_masses(c);
+  }
+}
+
 /* Without warm starting every substep starts from zero impulses: clamping
  * against a total that was not applied in this substep could let a contact
  * pull. */
@@ -802,16 +837,10 @@ static float normal_k(const tb_wide_contact* wc, int lane, tb_vec2 ra, tb_vec2 r
   return wc->ma[lane] + wc->mb[lane] + wc->ja[lane] * rna * rna + wc->jb[lane] * rnb * rnb;
 }
 
-/* The arms of a point now (as arms_now, one lane), and their K. */
-static float arms_at(const tb_wide_contact* wc, const tb_wide_point* cp, int lane, const tb_solver_body* sa,
-                     const tb_solver_body* sb, tb_vec2* ra, tb_vec2* rb) {
-  float limit = wc->shift_limit[lane], material = cp->material[lane];
-  tb_vec2 ra0 = {cp->rax[lane], cp->ray[lane]}, rb0 = {cp->rbx[lane], cp->rby[lane]};
-  tb_vec2 ta = tb_scale(material, tb_cross_sv(sa->da, ra0)), tb = tb_scale(material, tb_cross_sv(sb->da, rb0));
-  tb_vec2 d = tb_sub(tb_add(sb->dp, tb), tb_add(sa->dp, ta));
-  d = (tb_vec2){fminf(fmaxf(d.x, -limit), limit), fminf(fmaxf(d.y, -limit), limit)};
-  *ra = tb_mul_add(tb_add(ra0, ta), cp->shift_a[lane], d);
-  *rb = tb_mul_add(tb_add(rb0, tb), cp->shift_b[lane], d);
+/* The arms of a point now (stored by tb_contact_solver_update_arms), and their K. */
+static float arms_at(const tb_wide_contact* wc, const tb_wide_point* cp, int lane, tb_vec2* ra, tb_vec2* rb) {
+  *ra = (tb_vec2){cp->now_rax[lane], cp->now_ray[lane]};
+  *rb = (tb_vec2){cp->now_rbx[lane], cp->now_rby[lane]};
   return normal_k(wc, lane, *ra, *rb);
 }
 
@@ -854,7 +883,7 @@ static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact
                                                                tb_cross_sv(cc->spin_a, tb_sub(rea, ra0))));
     if (fabsf(before) < threshold) continue;
     tb_vec2 ra, rb;
-    float k = arms_at(wc, cp, lane, sa, sb, &ra, &rb), k_e = normal_k(wc, lane, rea, reb);
+    float k = arms_at(wc, cp, lane, &ra, &rb), k_e = normal_k(wc, lane, rea, reb);
     float vn = normal_speed(sa, sb, ra, rb, n), vn_e = normal_speed(sa, sb, rea, reb, n);
     float eb = cc->restitution * before;
     float target = sqrtf(fmaxf(vn * vn + k / k_e * (eb * eb - vn_e * vn_e), 0.0f));
@@ -887,7 +916,7 @@ static float apply_restitution(const tb_contact_constraint* cc, tb_wide_contact*
     if (!(cc->bouncing & (1 << p))) continue;
     tb_wide_point* cp = &wc->p[p];
     tb_vec2 ra, rb;
-    float k = arms_at(wc, cp, lane, sa, sb, &ra, &rb);
+    float k = arms_at(wc, cp, lane, &ra, &rb);
     float impulse = (cc->target[p] - normal_speed(sa, sb, ra, rb, n)) / k;
     float total = fmaxf(cp->normal_impulse[lane] + impulse, 0.0f);
     impulse = total - cp->normal_impulse[lane];

@@ -1266,10 +1266,9 @@ static momenta total_momenta(const tb_body_id* bodies, int n, tb_vec2 q) {
  * point, L changed by up to 1.3% here.) Energy: the bounce gives back
  * what Newton's rule would at the arms the step's impulses acted at on
  * average (contact_solver.c, restitution_targets), exactly for a point on
- * its own; the rounding of the same 500 impulses on the energy is below
+ * its own; then only the rounding of the same 500 impulses remains, below
  * 500 x 1.2e-7 = 6e-5: 1e-3, the issue's bound, leaves room for the two
- * coupled points of a block, which the point-by-point match only
- * approximates. */
+ * coupled points of a block, which the point-by-point match approximates. */
 START_TEST(off_centre_impacts_keep_momenta) {
   const float frictions[3] = {0.0f, 0.3f, 0.8f}, restitutions[3] = {0.0f, 0.5f, 1.0f};
   const tb_vec2 points[2] = {{0.0f, 0.0f}, {3.0f, -2.0f}};
