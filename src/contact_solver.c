@@ -93,6 +93,7 @@ typedef struct tb_wide_contact {
   tb_wide_point p[2];
   int32_t a[4], b[4]; /* solver bodies */
   int32_t rolling;    /* any lane with rolling resistance */
+  int32_t bouncy;     /* any lane with restitution (which needs the arms the impulses acted at) */
 } tb_wide_contact;
 
 /* What a contact constraint keeps besides its lane: where the lane is, and
@@ -287,6 +288,9 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wc->rolling_resistance = rolling_resistance;
   wc->rolling_mass = inverse_or_zero(ja + jb);
   wc->rolling_impulse = ctx->enable_warm_starting ? LANES(c, rolling_impulse) : zero;
+  tb_f4 restitution = LANES(c, restitution);
+  wc->bouncy =
+      (restitution[0] != 0.0f) | (restitution[1] != 0.0f) | (restitution[2] != 0.0f) | (restitution[3] != 0.0f);
   wc->rolling = (rolling_resistance[0] > 0.0f) | (rolling_resistance[1] > 0.0f) | (rolling_resistance[2] > 0.0f) |
                 (rolling_resistance[3] > 0.0f);
   wc->ma = ma;
@@ -569,7 +573,7 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
     wide_arms arms = stored_arms(cp);
-    count_normal(cp, &arms, cp->normal_impulse);
+    if (c->bouncy) count_normal(cp, &arms, cp->normal_impulse);
     tb_f4 Px = cp->normal_impulse * c->nx + cp->tangent_impulse * tx;
     tb_f4 Py = cp->normal_impulse * c->ny + cp->tangent_impulse * ty;
     apply_impulse(c, &arms, Px, Py, &A, &B);
@@ -665,12 +669,12 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   p1->max_normal_impulse = max4(p1->max_normal_impulse, x1);
   tb_f4 d1 = x1 - a1;
   apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
-  count_normal(p1, &arms1, d1);
+  if (c->bouncy) count_normal(p1, &arms1, d1);
   p2->normal_impulse = x2;
   p2->max_normal_impulse = max4(p2->max_normal_impulse, x2);
   tb_f4 d2 = x2 - a2;
   apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
-  count_normal(p2, &arms2, d2);
+  if (c->bouncy) count_normal(p2, &arms2, d2);
   /* the normal speed each point's change made (its own K_ii; the coupling
    * term is left out), for the relax passes' stop */
   if (!use_bias) *change = max4(*change, max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22));
@@ -782,22 +786,30 @@ void tb_contact_solver_warm_start(tb_world* w, tb_step_context* ctx) {
 }
 
 /* After the positions moved: each point's arms to its common point now, and
- * the effective masses there (the passes' impulses must not overshoot when
- * the arms grew; with the step start's masses, fast spinning debris blew up). */
+ * the effective masses there once an arm has moved by more than
+ * TB_ARM_MASS_SHIFT since the step began (the passes' impulses must not
+ * overshoot where the arms grew; the masses of arms that moved less are off
+ * by under 2 TB_ARM_MASS_SHIFT / r, 4% for 5 cm arms, which the passes
+ * absorb, and a resting structure does not pay for them). */
+#define TB_ARM_MASS_SHIFT (0.2f * TB_LINEAR_SLOP)
 void tb_contact_solver_update_arms(tb_world* w, tb_step_context* ctx) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+  const tb_f4 zero = splat(0.0f);
   for (int b = 0; b < w->wide_count; ++b) {
     tb_wide_contact* c = &wide[b];
     wide_body A = gather(ctx->states, c->a), B = gather(ctx->states, c->b);
+    tb_f4 moved = zero;
     for (int p = 0; p < 2; ++p) {
       tb_wide_point* cp = &c->p[p];
       wide_arms arms = arms_now(c, cp, &A, &B);
+      tb_f4 dx = arms.rax - cp->rax, dy = arms.ray - cp->ray, ex = arms.rbx - cp->rbx, ey = arms.rby - cp->rby;
+      moved = max4(moved, max4(max4(max4(dx, -dx), max4(dy, -dy)), max4(max4(ex, -ex), max4(ey, -ey))));
       cp->now_rax = arms.rax;
       cp->now_ray = arms.ray;
       cp->now_rbx = arms.rbx;
       cp->now_rby = arms.rby;
     }
-    set_masses(c);
+    if (fmaxf(fmaxf(moved[0], moved[1]), fmaxf(moved[2], moved[3])) > TB_ARM_MASS_SHIFT) set_masses(c);
   }
 }
 
