@@ -212,6 +212,7 @@ tb_body_id tb_create_body(tb_world_id world_id, const tb_body_def* def) {
   b->center = def->position;
   b->center_residual = (tb_vec2){0.0f, 0.0f};
   b->angle = def->angle;
+  b->angle_residual = 0.0f;
   if (def->type != TB_STATIC_BODY) {
     b->linear_velocity = def->linear_velocity;
     b->angular_velocity = def->fixed_rotation ? 0.0f : def->angular_velocity;
@@ -358,6 +359,7 @@ tb_result tb_body_set_transform(tb_body_id id, tb_vec2 position, float angle) {
   if (check_point(w, __func__, "position", position) || tb_check_angle(w, __func__, "angle", angle))
     return tb_last_result();
   b->angle = angle;
+  b->angle_residual = 0.0f;
   b->transform.q = tb_make_rot(angle);
   b->transform.p = position;
   b->center = tb_transform_point(b->transform, b->local_center);

@@ -26,6 +26,11 @@ typedef struct tb_contact {
   float rolling_resistance; /* coefficient times radius (m) */
   float tangent_speed;
   float rolling_impulse;
+  /* The overlap the bodies' approach drove in (approach speed x dt when it
+   * began, then only shrinking with the overlap): the contact solver's soft
+   * push takes it out, with momentum, not the momentum-free push-out (see
+   * contact_solver.c). */
+  float impact_depth;
   uint32_t flags;
 } tb_contact;
 

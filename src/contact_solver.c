@@ -70,22 +70,30 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
  * constraint; a contact with one point has an inert second point (no mass,
  * far apart) so that every lane has two. */
 typedef struct tb_wide_point {
-  tb_f4 rax, ray, rbx, rby; /* anchors from each centre of mass, world-oriented, at step start */
-  tb_f4 base_separation;    /* s0, the separation at the step start */
-  tb_f4 push_depth;         /* the soft push acts down to this depth, the push-out beyond */
+  tb_f4 rax, ray, rbx, rby;                 /* anchors from each centre of mass, world-oriented, at step start */
+  tb_f4 now_rax, now_ray, now_rbx, now_rby; /* the arms to the common point now (see arms_now) */
+  tb_f4 live;                               /* 1 for a point of the manifold, 0 for an inert one */
+  tb_f4 base_separation;                    /* s0, the separation at the step start */
+  tb_f4 push_depth;                         /* the soft push acts down to this depth, the push-out beyond */
   tb_f4 normal_mass, tangent_mass;
   tb_f4 normal_impulse, tangent_impulse, max_normal_impulse;
+  /* the normal impulses applied in the step, summed, and summed times the
+   * arms they were applied at (restitution's J_e) */
+  tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
+  tb_f4 shift_a, shift_b; /* the common point's share of the relative displacement, per arm (see arms_now) */
 } tb_wide_point;
 
 typedef struct tb_wide_contact {
   tb_f4 nx, ny, friction, tangent_speed, rolling_resistance, rolling_mass, rolling_impulse;
   tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
+  tb_f4 shift_limit;    /* how far (per axis) the arms follow the relative displacement (see arms_now) */
   tb_f4 bias_rate, mass_scale;
   /* both points' normal impulses solved together: K (symmetric) and its inverse */
   tb_f4 k11, k12, k22, n11, n12, n22, block; /* block: 1 where both points are solved together */
   tb_wide_point p[2];
   int32_t a[4], b[4]; /* solver bodies */
   int32_t rolling;    /* any lane with rolling resistance */
+  int32_t bouncy;     /* any lane with restitution (which needs the arms the impulses acted at) */
 } tb_wide_contact;
 
 /* What a contact constraint keeps besides its lane: where the lane is, and
@@ -96,6 +104,9 @@ typedef struct tb_contact_constraint {
   int point_count;
   float restitution;
   float relative_velocity[2]; /* normal speed of the points at the step start */
+  float spin_a, spin_b;       /* the bodies' angular velocities at the step start (see restitution_targets) */
+  float target[2];            /* normal speed after the bounce, of the points in bouncing (bit p: point p) */
+  int bouncing;
 } tb_contact_constraint;
 
 /* A contact with a point deeper than its push depth (less half
@@ -211,6 +222,43 @@ static inline tb_f4 inverse_or_zero(tb_f4 x) {
   return blend(x > zero, splat(1.0f) / x, zero);
 }
 
+/* The effective masses of a block's points at their arms now: normal and
+ * tangent mass of each point, and the 2x2 effective mass of the two normal
+ * impulses, K_ij = J_i M^-1 J_j^T, with its inverse. Like Box2D 2.4, points
+ * so close together that K is near singular (condition number over ~1000)
+ * are solved one after the other. */
+static inline void set_masses(tb_wide_contact* wc) {
+  const tb_f4 zero = splat(0.0f), one = splat(1.0f);
+  tb_f4 ma = wc->ma, mb = wc->mb, ja = wc->ja, jb = wc->jb, nx = wc->nx, ny = wc->ny, tx = ny, ty = -nx;
+  tb_f4 rn[2][2]; /* r x n of each point at A and B, for the block terms */
+  for (int p = 0; p < 2; ++p) {
+    tb_wide_point* wp = &wc->p[p];
+    tb_i4 live = wp->live > zero;
+    tb_f4 rax = wp->now_rax, ray = wp->now_ray, rbx = wp->now_rbx, rby = wp->now_rby;
+    tb_f4 rna = rax * ny - ray * nx, rnb = rbx * ny - rby * nx;
+    tb_f4 rta = rax * ty - ray * tx, rtb = rbx * ty - rby * tx;
+    wp->normal_mass = blend(live, inverse_or_zero(ma + mb + ja * rna * rna + jb * rnb * rnb), zero);
+    wp->tangent_mass = blend(live, inverse_or_zero(ma + mb + ja * rta * rta + jb * rtb * rtb), zero);
+    rn[p][0] = blend(live, rna, zero);
+    rn[p][1] = blend(live, rnb, zero);
+  }
+  tb_f4 r1a = rn[0][0], r1b = rn[0][1], r2a = rn[1][0], r2b = rn[1][1];
+  tb_i4 two = wc->p[1].live > zero;
+  tb_f4 k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
+  tb_f4 k22 = blend(two, ma + mb + ja * r2a * r2a + jb * r2b * r2b, zero);
+  tb_f4 k12 = blend(two, ma + mb + ja * r1a * r2a + jb * r1b * r2b, zero);
+  tb_f4 det = k11 * k22 - k12 * k12;
+  tb_i4 block = two & (k11 * k11 < splat(1000.0f) * det);
+  tb_f4 inv = one / det;
+  wc->k11 = k11;
+  wc->k12 = k12;
+  wc->k22 = k22;
+  wc->n11 = blend(block, inv * k22, zero);
+  wc->n12 = blend(block, -inv * k12, zero);
+  wc->n22 = blend(block, inv * k11, zero);
+  wc->block = blend(block, one, zero);
+}
+
 /* Prepares the constraints of one block's contacts, four lanes at a time
  * (the same float operations for each lane as for one contact alone).
  * k[lane] is the step contact of a lane, -1 for an unused one (cleared
@@ -231,7 +279,6 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wide_body A = gather(ctx->states, wc->a), B = gather(ctx->states, wc->b);
   tb_f4 ma = A.inv_mass, mb = B.inv_mass, ja = A.inv_inertia, jb = B.inv_inertia;
   tb_f4 nx = LANES(c, manifold.normal.x), ny = LANES(c, manifold.normal.y);
-  tb_f4 tx = ny, ty = -nx; /* tb_right_perp(n) */
   tb_i4 point_count = INT_LANES(c, manifold.point_count);
   tb_f4 rolling_resistance = LANES(c, rolling_resistance);
   wc->nx = nx;
@@ -241,19 +288,24 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wc->rolling_resistance = rolling_resistance;
   wc->rolling_mass = inverse_or_zero(ja + jb);
   wc->rolling_impulse = ctx->enable_warm_starting ? LANES(c, rolling_impulse) : zero;
+  tb_f4 restitution = LANES(c, restitution);
+  wc->bouncy =
+      (restitution[0] != 0.0f) | (restitution[1] != 0.0f) | (restitution[2] != 0.0f) | (restitution[3] != 0.0f);
   wc->rolling = (rolling_resistance[0] > 0.0f) | (rolling_resistance[1] > 0.0f) | (rolling_resistance[2] > 0.0f) |
                 (rolling_resistance[3] > 0.0f);
   wc->ma = ma;
   wc->ja = ja;
   wc->mb = mb;
   wc->jb = jb;
+  tb_f4 mass_share = mb * inverse_or_zero(ma + mb); /* beta by the inverse masses (see arms_now) */
+  tb_i4 both_move = (ma > zero) & (mb > zero);
+  wc->shift_limit = min4(LANES(ba, max_extent), LANES(bb, max_extent));
   tb_f4 cax = LANES(ba, center.x), cay = LANES(ba, center.y), cbx = LANES(bb, center.x), cby = LANES(bb, center.y);
   const tb_i4 dynamic = {TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY};
   tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
   tb_f4 omega = blend(rigid_other, splat(TB_TWO_PI_F * ctx->static_hertz), splat(TB_TWO_PI_F * ctx->contact_hertz));
   wc->bias_rate = blend(rigid_other, splat(ctx->static_softness.bias_rate), splat(ctx->contact_softness.bias_rate));
   wc->mass_scale = blend(rigid_other, splat(ctx->static_softness.mass_scale), splat(ctx->contact_softness.mass_scale));
-  tb_f4 rn[2][2];    /* r x n of each point at A and B, for the block terms */
   tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* wp = &wc->p[p];
@@ -261,51 +313,46 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     /* ra = point - centre of A, rb likewise; r x n and r x t (tb_cross) */
     tb_f4 rax = LANES(c, manifold.points[p].point.x) - cax, ray = LANES(c, manifold.points[p].point.y) - cay;
     tb_f4 rbx = LANES(c, manifold.points[p].point.x) - cbx, rby = LANES(c, manifold.points[p].point.y) - cby;
-    tb_f4 rna = rax * ny - ray * nx, rnb = rbx * ny - rby * nx;
-    tb_f4 rta = rax * ty - ray * tx, rtb = rbx * ty - rby * tx;
-    tb_f4 normal_mass = inverse_or_zero(ma + mb + ja * rna * rna + jb * rnb * rnb);
-    tb_f4 tangent_mass = inverse_or_zero(ma + mb + ja * rta * rta + jb * rtb * rtb);
     tb_f4 normal_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].normal_impulse) : zero;
     tb_f4 tangent_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].tangent_impulse) : zero;
     wp->rax = blend(used, rax, zero);
     wp->ray = blend(used, ray, zero);
     wp->rbx = blend(used, rbx, zero);
     wp->rby = blend(used, rby, zero);
-    rn[p][0] = blend(used, rna, zero);
-    rn[p][1] = blend(used, rnb, zero);
+    wp->now_rax = wp->rax;
+    wp->now_ray = wp->ray;
+    wp->now_rbx = wp->rbx;
+    wp->now_rby = wp->rby;
+    wp->live = blend(used, one, zero);
     /* the manifold is of the float centres; the true gap adds the bodies'
      * center_residual along the normal */
     tb_f4 residual_gap = (LANES(bb, center_residual.x) - LANES(ba, center_residual.x)) * nx +
                          (LANES(bb, center_residual.y) - LANES(ba, center_residual.y)) * ny;
     wp->base_separation = blend(used, LANES(c, manifold.points[p].separation) + residual_gap, one);
-    wp->normal_mass = blend(used, normal_mass, zero);
-    wp->tangent_mass = blend(used, tangent_mass, zero);
     wp->normal_impulse = blend(used, normal_impulse, zero);
     wp->tangent_impulse = blend(used, tangent_impulse, zero);
     wp->max_normal_impulse = zero;
+    wp->applied = wp->applied_rax = wp->applied_ray = wp->applied_rbx = wp->applied_rby = zero;
+    /* the common point (see arms_now): a vertex of B on an edge of A moves
+     * with B (beta = 1), a vertex of A on an edge of B with A (beta = 0);
+     * else, and against a body that impulses do not move, by the inverse
+     * masses */
+    tb_i4 id = INT_LANES(c, manifold.points[p].id);
+    const tb_i4 bit = {1, 1, 1, 1};
+    tb_i4 edge_a = (id >> 16) & bit, edge_b = (id >> 24) & bit;
+    tb_i4 vertex_b = both_move & (edge_a == bit) & (edge_b != bit);
+    tb_i4 vertex_a = both_move & (edge_a != bit) & (edge_b == bit);
+    tb_f4 beta = blend(vertex_b, one, blend(vertex_a, zero, mass_share));
+    wp->shift_a = beta;
+    wp->shift_b = beta - one;
     /* (v_B + w_B x rb - v_A - w_A x ra) . n */
     tb_f4 vax = A.vx + -A.w * ray, vay = A.vy + A.w * rax;
     tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
     approach[p] = blend(used, nx * (vbx - vax) + ny * (vby - vay), zero);
   }
-  /* the 2x2 effective mass of the two normal impulses, K_ij = J_i M^-1 J_j^T,
-   * and its inverse. Like Box2D 2.4, points so close together that K is near
-   * singular (condition number over ~1000) are solved one after the other. */
-  tb_f4 r1a = rn[0][0], r1b = rn[0][1], r2a = rn[1][0], r2b = rn[1][1];
-  tb_i4 two = point_count >= (tb_i4){2, 2, 2, 2};
-  tb_f4 k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
-  tb_f4 k22 = blend(two, ma + mb + ja * r2a * r2a + jb * r2b * r2b, zero);
-  tb_f4 k12 = blend(two, ma + mb + ja * r1a * r2a + jb * r1b * r2b, zero);
-  tb_f4 det = k11 * k22 - k12 * k12;
-  tb_i4 block = two & (k11 * k11 < splat(1000.0f) * det);
-  tb_f4 inv = one / det;
-  wc->k11 = k11;
-  wc->k12 = k12;
-  wc->k22 = k22;
-  wc->n11 = blend(block, inv * k22, zero);
-  wc->n12 = blend(block, -inv * k12, zero);
-  wc->n22 = blend(block, inv * k11, zero);
-  wc->block = blend(block, one, zero);
+  set_masses(wc);
+  tb_f4 k11 = wc->k11, k12 = wc->k12, k22 = wc->k22;
+  tb_i4 block = wc->block > zero;
   /* The soft push acts down to the depth at which the points' load (their
    * warm start) rests on the springs, plus TB_DEEP_OVERLAP; what lies deeper,
    * an overlap the load does not explain, is the push-out's. The springs hold
@@ -315,11 +362,27 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 per_depth = splat(ctx->inv_h) / (omega * omega);
   tb_f4 a1 = wc->p[0].normal_impulse, a2 = wc->p[1].normal_impulse, k12_block = blend(block, k12, zero);
   /* max4 with zero also turns 0 * inf (a tiny contact_hertz) into 0 */
-  wc->p[0].push_depth = max4((k11 * a1 + k12_block * a2) * per_depth, zero) + splat(TB_DEEP_OVERLAP);
-  wc->p[1].push_depth = max4((k12_block * a1 + k22 * a2) * per_depth, zero) + splat(TB_DEEP_OVERLAP);
+  /* Between two dynamic bodies, an overlap that their approach drove in is
+   * the soft push's too: its impulses keep the momenta, where the push-out
+   * moved the bodies without momentum and so turned two bodies sliding past
+   * each other (angular momentum changed by up to 0.4%). The contact keeps
+   * the depth so explained: what remains of the last step's, plus what the
+   * approach (speed x dt) can drive in during this one. Bodies created or
+   * moved into each other have no approach, and a pile is still pushed out;
+   * against static and kinematic bodies nothing changes (no momentum to keep). */
+  tb_f4 depth = max4(max4(-wc->p[0].base_separation, -wc->p[1].base_separation), zero);
+  tb_f4 driven = blend(rigid_other, zero, max4(max4(-approach[0], -approach[1]), zero) * splat(ctx->dt));
+  tb_f4 impact_depth = min4(depth, LANES(c, impact_depth)) + driven;
+  wc->p[0].push_depth =
+      max4(max4((k11 * a1 + k12_block * a2) * per_depth, zero), impact_depth) + splat(TB_DEEP_OVERLAP);
+  wc->p[1].push_depth =
+      max4(max4((k12_block * a1 + k22 * a2) * per_depth, zero), impact_depth) + splat(TB_DEEP_OVERLAP);
   for (int lane = 0; lane < 4; ++lane) {
     if (k[lane] < 0) continue;
     tb_contact_constraint* cc = &constraints(w)[k[lane]];
+    cc->spin_a = A.w[lane];
+    cc->spin_b = B.w[lane];
+    ((tb_contact*)c[lane])->impact_depth = impact_depth[lane];
     cc->point_count = point_count[lane];
     cc->restitution = c[lane]->restitution;
     cc->relative_velocity[0] = approach[0][lane];
@@ -437,8 +500,57 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
 
 /* ---- wide solve ------------------------------------------------------------ */
 
-/* An impulse P at each anchor of one point: -P on A, +P on B. */
-static inline void apply_impulse(const tb_wide_contact* c, const tb_wide_point* cp, tb_f4 Px, tb_f4 Py, wide_body* A,
+/* The arms of one point now, from each body's centre to one common world
+ * point. The arms of the step start (the manifold point) stay fixed in world
+ * orientation, but the centres move with the substeps: arms fixed to the
+ * bodies put the two bodies' ends of an impulse d = dp_B - dp_A apart, and
+ * each impulse P added the torque d x P that nothing pays for (two boxes
+ * sliding past each other changed their angular momentum by 4 to 15%). The
+ * common point is the manifold point moved by (1 - beta) dp_A + beta dp_B:
+ *   r_A = r_A0 + beta d,  r_B = r_B0 - (1 - beta) d,
+ * so x_A + r_A = x_B + r_B and P at r_A, -P at r_B turn nothing. Where the
+ * point is a vertex of one dynamic body on an edge of the other (feature
+ * id), it moves with that vertex's body: beta = 1 for a vertex of B, 0 for
+ * one of A (with the mass-weighted beta below, the two-point bounces of a
+ * capsule on a polygon lost 1.6% of their energy). Elsewhere (round shapes,
+ * and against a static or kinematic body) beta = m_B / (m_A + m_B) by the
+ * inverse masses: against a body that does not move the point keeps the
+ * dynamic body's step start arm, as a box sliding on the ground needs. The
+ * arms' turn with their bodies is left out, as in the separation (see the
+ * top of this file; with it, fast spinning debris blew up). The effective
+ * masses follow the arms (tb_contact_solver_update_arms). d is followed only
+ * up to the smaller body's extent (per axis): a body that slides further
+ * than its own size in one step (a bullet along a plank) has left the step
+ * start's manifold point, and arms that followed it off the other body's
+ * surface spun the plank out of the bullet's way. */
+typedef struct wide_arms {
+  tb_f4 rax, ray, rbx, rby;
+} wide_arms;
+
+static inline wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
+                                 const wide_body* B) {
+  tb_f4 dx = min4(max4(B->dpx - A->dpx, -c->shift_limit), c->shift_limit);
+  tb_f4 dy = min4(max4(B->dpy - A->dpy, -c->shift_limit), c->shift_limit);
+  return (wide_arms){cp->rax + cp->shift_a * dx, cp->ray + cp->shift_a * dy, cp->rbx + cp->shift_b * dx,
+                     cp->rby + cp->shift_b * dy};
+}
+
+/* The arms stored by tb_contact_solver_update_arms (or prepare). */
+static inline wide_arms stored_arms(const tb_wide_point* cp) {
+  return (wide_arms){cp->now_rax, cp->now_ray, cp->now_rbx, cp->now_rby};
+}
+
+/* Keeps count of a normal impulse applied at these arms (see restitution_targets). */
+static inline void count_normal(tb_wide_point* cp, const wide_arms* arms, tb_f4 impulse) {
+  cp->applied += impulse;
+  cp->applied_rax += impulse * arms->rax;
+  cp->applied_ray += impulse * arms->ray;
+  cp->applied_rbx += impulse * arms->rbx;
+  cp->applied_rby += impulse * arms->rby;
+}
+
+/* An impulse P at each end of one point: -P on A, +P on B. */
+static inline void apply_impulse(const tb_wide_contact* c, const wide_arms* cp, tb_f4 Px, tb_f4 Py, wide_body* A,
                                  wide_body* B) {
   A->vx -= c->ma * Px;
   A->vy -= c->ma * Py;
@@ -449,7 +561,7 @@ static inline void apply_impulse(const tb_wide_contact* c, const tb_wide_point* 
 }
 
 /* (v_B + w_B x r_B) - (v_A + w_A x r_A) at one point */
-static inline void relative_velocity(const tb_wide_point* cp, const wide_body* A, const wide_body* B, tb_f4* dvx,
+static inline void relative_velocity(const wide_arms* cp, const wide_body* A, const wide_body* B, tb_f4* dvx,
                                      tb_f4* dvy) {
   *dvx = (B->vx + -B->w * cp->rby) - (A->vx + -A->w * cp->ray);
   *dvy = (B->vy + B->w * cp->rbx) - (A->vy + A->w * cp->rax);
@@ -459,10 +571,12 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
   wide_body A = gather_velocities(states, c->a), B = gather_velocities(states, c->b);
   tb_f4 tx = c->ny, ty = -c->nx;
   for (int p = 0; p < 2; ++p) {
-    const tb_wide_point* cp = &c->p[p];
+    tb_wide_point* cp = &c->p[p];
+    wide_arms arms = stored_arms(cp);
+    if (c->bouncy) count_normal(cp, &arms, cp->normal_impulse);
     tb_f4 Px = cp->normal_impulse * c->nx + cp->tangent_impulse * tx;
     tb_f4 Py = cp->normal_impulse * c->ny + cp->tangent_impulse * ty;
-    apply_impulse(c, cp, Px, Py, &A, &B);
+    apply_impulse(c, &arms, Px, Py, &A, &B);
   }
   A.w -= c->ja * c->rolling_impulse;
   B.w += c->jb * c->rolling_impulse;
@@ -472,8 +586,9 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
 
 /* The soft terms of one point's normal impulse: its mass scale, and
  * r = v_n + bias, with the separation s predicted from the bodies' motion. */
-static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
-                                  const wide_body* B, float inv_h, float push, bool use_bias, tb_f4* mass_scale) {
+static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_arms* arms,
+                                  const wide_body* A, const wide_body* B, float inv_h, float push, bool use_bias,
+                                  tb_f4* mass_scale) {
   const tb_f4 zero = splat(0.0f), one = splat(1.0f);
   /* da x r = (-da r.y, da r.x), as tb_cross_sv */
   tb_f4 prax = -A->da * cp->ray, pray = A->da * cp->rax;
@@ -490,23 +605,24 @@ static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point*
     *mass_scale = one;
   }
   tb_f4 dvx, dvy;
-  relative_velocity(cp, A, B, &dvx, &dvy);
+  relative_velocity(arms, A, B, &dvx, &dvy);
   return dvx * c->nx + dvy * c->ny + bias;
 }
 
 /* Friction at one point: the tangent impulse, clamped by mu times the
  * point's normal impulse, towards the surfaces' tangent speed. */
-static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, wide_body* A, wide_body* B) {
+static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, const wide_arms* arms, wide_body* A,
+                                  wide_body* B) {
   tb_f4 tx = c->ny, ty = -c->nx;
   tb_f4 dvx, dvy;
-  relative_velocity(cp, A, B, &dvx, &dvy);
+  relative_velocity(arms, A, B, &dvx, &dvy);
   tb_f4 vt = dvx * tx + dvy * ty;
   tb_f4 impulse = -cp->tangent_mass * (vt - c->tangent_speed);
   tb_f4 limit = c->friction * cp->normal_impulse;
   tb_f4 total = min4(max4(cp->tangent_impulse + impulse, -limit), limit);
   impulse = total - cp->tangent_impulse;
   cp->tangent_impulse = total;
-  apply_impulse(c, cp, impulse * tx, impulse * ty, A, B);
+  apply_impulse(c, arms, impulse * tx, impulse * ty, A, B);
 }
 
 /* Always inlined: the biased and the relax pass each get a copy without the
@@ -521,9 +637,10 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
    * Since mass_scale + impulse_scale = 1, the soft update of one point,
    * a - m_n mass_scale (v_n + bias) - impulse_scale a, is the same as
    * x = -mass_scale m_n r: a new total that does not depend on a. */
+  wide_arms arms1 = stored_arms(p1), arms2 = stored_arms(p2);
   tb_f4 ms1, ms2;
-  tb_f4 t1 = normal_target(c, p1, &A, &B, inv_h, push, use_bias, &ms1);
-  tb_f4 t2 = normal_target(c, p2, &A, &B, inv_h, push, use_bias, &ms2);
+  tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, inv_h, push, use_bias, &ms1);
+  tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, inv_h, push, use_bias, &ms2);
   tb_f4 a1 = p1->normal_impulse, a2 = p2->normal_impulse;
   /* Both points at once (Box2D 2.4's block solver for the mixed LCP
    * x >= 0, K x + r0 >= 0, complementary; here scaled by mass_scale): the
@@ -551,16 +668,18 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   p1->normal_impulse = x1;
   p1->max_normal_impulse = max4(p1->max_normal_impulse, x1);
   tb_f4 d1 = x1 - a1;
-  apply_impulse(c, p1, d1 * c->nx, d1 * c->ny, &A, &B);
+  apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
+  if (c->bouncy) count_normal(p1, &arms1, d1);
   p2->normal_impulse = x2;
   p2->max_normal_impulse = max4(p2->max_normal_impulse, x2);
   tb_f4 d2 = x2 - a2;
-  apply_impulse(c, p2, d2 * c->nx, d2 * c->ny, &A, &B);
+  apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
+  if (c->bouncy) count_normal(p2, &arms2, d2);
   /* the normal speed each point's change made (its own K_ii; the coupling
    * term is left out), for the relax passes' stop */
   if (!use_bias) *change = max4(*change, max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22));
-  solve_friction(c, p1, &A, &B);
-  solve_friction(c, p2, &A, &B);
+  solve_friction(c, p1, &arms1, &A, &B);
+  solve_friction(c, p2, &arms2, &A, &B);
   if (c->rolling) {
     tb_f4 limit = c->rolling_resistance * (x1 + x2);
     tb_f4 impulse = -c->rolling_mass * (B.w - A.w);
@@ -666,6 +785,34 @@ void tb_contact_solver_warm_start(tb_world* w, tb_step_context* ctx) {
   for (int b = 0; b < w->wide_count; ++b) warm_start_wide(&wide[b], ctx->states);
 }
 
+/* After the positions moved: each point's arms to its common point now, and
+ * the effective masses there once an arm has moved by more than
+ * TB_ARM_MASS_SHIFT since the step began (the passes' impulses must not
+ * overshoot where the arms grew; the masses of arms that moved less are off
+ * by under 2 TB_ARM_MASS_SHIFT / r, 4% for 5 cm arms, which the passes
+ * absorb, and a resting structure does not pay for them). */
+#define TB_ARM_MASS_SHIFT (0.2f * TB_LINEAR_SLOP)
+void tb_contact_solver_update_arms(tb_world* w, tb_step_context* ctx) {
+  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+  const tb_f4 zero = splat(0.0f);
+  for (int b = 0; b < w->wide_count; ++b) {
+    tb_wide_contact* c = &wide[b];
+    wide_body A = gather(ctx->states, c->a), B = gather(ctx->states, c->b);
+    tb_f4 moved = zero;
+    for (int p = 0; p < 2; ++p) {
+      tb_wide_point* cp = &c->p[p];
+      wide_arms arms = arms_now(c, cp, &A, &B);
+      tb_f4 dx = arms.rax - cp->rax, dy = arms.ray - cp->ray, ex = arms.rbx - cp->rbx, ey = arms.rby - cp->rby;
+      moved = max4(moved, max4(max4(max4(dx, -dx), max4(dy, -dy)), max4(max4(ex, -ex), max4(ey, -ey))));
+      cp->now_rax = arms.rax;
+      cp->now_ray = arms.ray;
+      cp->now_rbx = arms.rbx;
+      cp->now_rby = arms.rby;
+    }
+    if (fmaxf(fmaxf(moved[0], moved[1]), fmaxf(moved[2], moved[3])) > TB_ARM_MASS_SHIFT) set_masses(c);
+  }
+}
+
 /* Without warm starting every substep starts from zero impulses: clamping
  * against a total that was not applied in this substep could let a contact
  * pull. */
@@ -692,8 +839,74 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
   return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }
 
+#define TB_RESTITUTION_PASSES 16
+#define TB_RESTITUTION_TOLERANCE 1e-5f /* m/s, as the relax passes' stop */
+
+/* K = J M^-1 J^T of a point's normal impulse at arms ra, rb */
+static float normal_k(const tb_wide_contact* wc, int lane, tb_vec2 ra, tb_vec2 rb) {
+  tb_vec2 n = {wc->nx[lane], wc->ny[lane]};
+  float rna = tb_cross(ra, n), rnb = tb_cross(rb, n);
+  return wc->ma[lane] + wc->mb[lane] + wc->ja[lane] * rna * rna + wc->jb[lane] * rnb * rnb;
+}
+
+/* The arms of a point now (stored by tb_contact_solver_update_arms), and their K. */
+static float arms_at(const tb_wide_contact* wc, const tb_wide_point* cp, int lane, tb_vec2* ra, tb_vec2* rb) {
+  *ra = (tb_vec2){cp->now_rax[lane], cp->now_ray[lane]};
+  *rb = (tb_vec2){cp->now_rbx[lane], cp->now_rby[lane]};
+  return normal_k(wc, lane, *ra, *rb);
+}
+
+static float normal_speed(const tb_solver_body* sa, const tb_solver_body* sb, tb_vec2 ra, tb_vec2 rb, tb_vec2 n) {
+  return tb_dot(tb_sub(tb_add(sb->v, tb_cross_sv(sb->w, rb)), tb_add(sa->v, tb_cross_sv(sa->w, ra))), n);
+}
+
+/* Each point's normal speed after the bounce, from the velocities after the
+ * substeps (before any restitution impulse). The impulses of the substeps
+ * acted along J_e, at the impulse-weighted mean of the arms they were applied
+ * at; the bounce acts along J, at the common point now (so that it turns
+ * nothing). Newton's rule at J_e, v_n' = -e before with before the step
+ * start's approach seen there (J v is affine in the arms),
+ *   before = J_e v0 = v_n0 + n . (w_B0 x (r_Be - r_B0) - w_A0 x (r_Ae - r_A0)),
+ * would add the energy ((e before)^2 - vn_e^2) / (2 k_e); the bounce along J
+ * adds the same when it reaches
+ *   v_n'^2 = vn^2 + (k / k_e) ((e before)^2 - vn_e^2)
+ * (vn, k: normal speed and K along J; vn_e, k_e along J_e). Without drift
+ * (J = J_e) this is Newton's rule itself; with it, a frictionless e = 1
+ * impact of bodies sliding past each other keeps its energy (Newton's rule
+ * with the approach at J lost 2.6%; the bounce along J_e turned the bodies). */
+static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact* wc, const tb_solver_body* states,
+                                float threshold) {
+  int lane = cc->lane % 4;
+  const tb_solver_body* sa = &states[wc->a[lane]];
+  const tb_solver_body* sb = &states[wc->b[lane]];
+  tb_vec2 n = {wc->nx[lane], wc->ny[lane]};
+  cc->bouncing = 0;
+  for (int p = 0; p < cc->point_count; ++p) {
+    const tb_wide_point* cp = &wc->p[p];
+    if (cp->max_normal_impulse[lane] == 0.0f || !(cp->normal_mass[lane] > 0.0f)) continue;
+    tb_vec2 ra0 = {cp->rax[lane], cp->ray[lane]}, rb0 = {cp->rbx[lane], cp->rby[lane]};
+    float applied = cp->applied[lane];
+    tb_vec2 rea = ra0, reb = rb0;
+    if (applied > 0.0f) {
+      rea = tb_scale(1.0f / applied, (tb_vec2){cp->applied_rax[lane], cp->applied_ray[lane]});
+      reb = tb_scale(1.0f / applied, (tb_vec2){cp->applied_rbx[lane], cp->applied_rby[lane]});
+    }
+    float before = cc->relative_velocity[p] + tb_dot(n, tb_sub(tb_cross_sv(cc->spin_b, tb_sub(reb, rb0)),
+                                                               tb_cross_sv(cc->spin_a, tb_sub(rea, ra0))));
+    if (fabsf(before) < threshold) continue;
+    tb_vec2 ra, rb;
+    float k = arms_at(wc, cp, lane, &ra, &rb), k_e = normal_k(wc, lane, rea, reb);
+    float vn = normal_speed(sa, sb, ra, rb, n), vn_e = normal_speed(sa, sb, rea, reb, n);
+    float eb = cc->restitution * before;
+    float target = sqrtf(fmaxf(vn * vn + k / k_e * (eb * eb - vn_e * vn_e), 0.0f));
+    cc->target[p] = before > 0.0f ? -target : target; /* struck from behind: it approaches at e before */
+    cc->bouncing |= 1 << p;
+  }
+}
+
 /* Newton's restitution on the points that pushed during the step:
- * v_n' = -e v_n(before), with v_n(before) the normal speed at the step start.
+ * v_n' = -e v_n(before), with v_n(before) the normal speed at the step start
+ * (as restitution_targets corrects it for the drift of the arms).
  * Points whose speed was below the threshold either way are left alone: slow
  * approaches do not bounce. A point that was separating at the step start
  * and pushed all the same was struck from behind within the step (a ball
@@ -704,44 +917,34 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
  * leaving such a point out let its neighbour's bounce drive the struck body
  * through it unopposed, after the substeps had stopped it inelastically.
  * Returns the largest normal speed change of a point. */
-#define TB_RESTITUTION_PASSES 16
-#define TB_RESTITUTION_TOLERANCE 1e-5f /* m/s, as the relax passes' stop */
-static float apply_restitution(const tb_contact_constraint* cc, tb_wide_contact* wc, tb_solver_body* states,
-                               float threshold) {
+static float apply_restitution(const tb_contact_constraint* cc, tb_wide_contact* wc, tb_solver_body* states) {
   int lane = cc->lane % 4;
   tb_solver_body* sa = &states[wc->a[lane]];
   tb_solver_body* sb = &states[wc->b[lane]];
-  tb_vec2 va = sa->v, vb = sb->v;
-  float wa = sa->w, wb = sb->w;
   tb_vec2 n = {wc->nx[lane], wc->ny[lane]};
+  float ma = wc->ma[lane], ja = wc->ja[lane], mb = wc->mb[lane], jb = wc->jb[lane];
   float change = 0.0f;
   for (int p = 0; p < cc->point_count; ++p) {
+    if (!(cc->bouncing & (1 << p))) continue;
     tb_wide_point* cp = &wc->p[p];
-    float before = cc->relative_velocity[p];
-    if (fabsf(before) < threshold || cp->max_normal_impulse[lane] == 0.0f || !(cp->normal_mass[lane] > 0.0f)) continue;
-    tb_vec2 ra = {cp->rax[lane], cp->ray[lane]}, rb = {cp->rbx[lane], cp->rby[lane]};
-    tb_vec2 dv = tb_sub(tb_add(vb, tb_cross_sv(wb, rb)), tb_add(va, tb_cross_sv(wa, ra)));
-    float vn = tb_dot(dv, n);
-    float impulse = -cp->normal_mass[lane] * (vn + cc->restitution * before);
+    tb_vec2 ra, rb;
+    float k = arms_at(wc, cp, lane, &ra, &rb);
+    float impulse = (cc->target[p] - normal_speed(sa, sb, ra, rb, n)) / k;
     float total = fmaxf(cp->normal_impulse[lane] + impulse, 0.0f);
     impulse = total - cp->normal_impulse[lane];
     cp->normal_impulse[lane] = total;
-    change = fmaxf(change, fabsf(impulse) / cp->normal_mass[lane]);
+    change = fmaxf(change, fabsf(impulse) * k);
     tb_vec2 P = tb_scale(impulse, n);
-    va = tb_mul_add(va, -wc->ma[lane], P);
-    wa -= wc->ja[lane] * tb_cross(ra, P);
-    vb = tb_mul_add(vb, wc->mb[lane], P);
-    wb += wc->jb[lane] * tb_cross(rb, P);
+    sa->v = tb_mul_add(sa->v, -ma, P);
+    sa->w -= ja * tb_cross(ra, P);
+    sb->v = tb_mul_add(sb->v, mb, P);
+    sb->w += jb * tb_cross(rb, P);
   }
-  sa->v = va;
-  sa->w = wa;
-  sb->v = vb;
-  sb->w = wb;
   return change;
 }
 
 void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
-  const tb_contact_constraint* cs = constraints(w);
+  tb_contact_constraint* cs = constraints(w);
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   /* Restitution is iterated like the velocity solve: a ball that strikes two
    * others at once (or a row of touching balls) only bounces off all of them
@@ -752,12 +955,14 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
    * more than TB_RESTITUTION_TOLERANCE (one pass for lone contacts). */
   bool bouncy = false; /* most scenes have no restitution: one look instead of the passes */
   for (int k = 0; k < w->step_contact_count; ++k) bouncy |= cs[k].restitution != 0.0f;
+  for (int k = 0; bouncy && k < w->step_contact_count; ++k)
+    if (cs[k].restitution != 0.0f)
+      restitution_targets(&cs[k], &wide[cs[k].lane / 4], ctx->states, ctx->restitution_threshold);
   for (int pass = 0; bouncy && pass < TB_RESTITUTION_PASSES; ++pass) {
     float change = 0.0f;
     for (int k = 0; k < w->step_contact_count; ++k)
       if (cs[k].restitution != 0.0f)
-        change =
-            fmaxf(change, apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states, ctx->restitution_threshold));
+        change = fmaxf(change, apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states));
     if (change <= TB_RESTITUTION_TOLERANCE) break;
   }
   /* the lanes' accumulated impulses are kept for the next step's warm start */

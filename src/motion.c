@@ -5,8 +5,9 @@
  *
  * Semi-implicit (symplectic) Euler is the default and matches the constraint
  * solver: V += h a; V /= (1 + h c_v) (damping like Box2D); X += h V. The angle
- * is a scalar integrated the same way, so constant spin is exact up to float
- * rounding. Midpoint (RK2) and RK4 evaluate the ODE at intermediate states,
+ * is a scalar integrated the same way, summed in double and kept with a
+ * residual (tb_body_turn), so constant spin is exact up to the rounding of
+ * the float angle. Midpoint (RK2) and RK4 evaluate the ODE at intermediate states,
  * with damping as the linear term above; they pay off for smooth force fields.
  *
  * Every state, the stages' included, keeps its velocities within the step's
@@ -21,7 +22,7 @@
 
 typedef struct state {
   tb_vec2 x; /* displacement from the centre at the step start (see center_residual) */
-  float a;
+  double a;  /* angle turned since the step start, summed in double (see tb_body_turn) */
   tb_vec2 v;
   float w;
 } state;
@@ -29,7 +30,7 @@ typedef struct state {
 /* dy/dt */
 typedef struct rate {
   tb_vec2 dx; /* = V */
-  float da;   /* = w */
+  double da;  /* = w (double: the Runge-Kutta sums of it stay exact) */
   tb_vec2 dv; /* acceleration */
   float dw;   /* angular acceleration */
 } rate;
@@ -57,7 +58,8 @@ static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* for
   *torque = c->body->torque;
   if (c->world->force_field != NULL) {
     const tb_body* b = c->body;
-    tb_body_state s = {c->id, tb_add(b->center, y->x), y->a, y->v, y->w, b->mass, b->inertia, b->user_data};
+    tb_body_state s = {c->id,       tb_add(b->center, y->x), b->angle + (float)y->a, y->v, y->w, b->mass, b->inertia,
+                       b->user_data};
     tb_vec2 f = {0.0f, 0.0f};
     float tq = 0.0f;
     c->world->force_field(t, &s, c->world->force_field_context, &f, &tq);
@@ -80,14 +82,17 @@ static bool derivative(const body_ctx* c, double t, const state* y, rate* out) {
   return true;
 }
 
-/* y + h d, within the speed caps */
-static state advance(const body_ctx* c, const state* y, float h, const rate* d) {
-  state next = {tb_mul_add(y->x, h, d->dx), y->a + h * d->da, tb_mul_add(y->v, h, d->dv), y->w + h * d->dw};
+/* y + h d, within the speed caps (h exact in double for the angle, rounded to
+ * float for the rest) */
+static state advance(const body_ctx* c, const state* y, double h, const rate* d) {
+  float hf = (float)h;
+  state next = {tb_mul_add(y->x, hf, d->dx), y->a + h * d->da, tb_mul_add(y->v, hf, d->dv), y->w + hf * d->dw};
   cap_speeds(c, &next);
   return next;
 }
 
-static bool step_euler(const body_ctx* c, double t, float h, state* y) {
+static bool step_euler(const body_ctx* c, double t, double exact_h, state* y) {
+  float h = (float)exact_h;
   tb_vec2 f;
   float tq;
   total_load(c, t, y, &f, &tq);
@@ -98,43 +103,43 @@ static bool step_euler(const body_ctx* c, double t, float h, state* y) {
   y->w *= 1.0f / (1.0f + h * b->angular_damping);
   cap_speeds(c, y);
   y->x = tb_mul_add(y->x, h, y->v);
-  y->a += h * y->w;
+  y->a += exact_h * (double)y->w;
   return state_finite(y);
 }
 
-static bool step_midpoint(const body_ctx* c, double t, float h, state* y) {
+static bool step_midpoint(const body_ctx* c, double t, double h, state* y) {
   rate k1, k2;
   if (!derivative(c, t, y, &k1)) return false;
-  state mid = advance(c, y, 0.5f * h, &k1);
+  state mid = advance(c, y, 0.5 * h, &k1);
   if (!derivative(c, t + 0.5 * h, &mid, &k2)) return false;
   *y = advance(c, y, h, &k2);
   return state_finite(y);
 }
 
-static bool step_rk4(const body_ctx* c, double t, float h, state* y) {
+static bool step_rk4(const body_ctx* c, double t, double h, state* y) {
   rate k1, k2, k3, k4;
   if (!derivative(c, t, y, &k1)) return false;
-  state y2 = advance(c, y, 0.5f * h, &k1);
+  state y2 = advance(c, y, 0.5 * h, &k1);
   if (!derivative(c, t + 0.5 * h, &y2, &k2)) return false;
-  state y3 = advance(c, y, 0.5f * h, &k2);
+  state y3 = advance(c, y, 0.5 * h, &k2);
   if (!derivative(c, t + 0.5 * h, &y3, &k3)) return false;
   state y4 = advance(c, y, h, &k3);
   if (!derivative(c, t + h, &y4, &k4)) return false;
   /* y += h/6 (k1 + 2 k2 + 2 k3 + k4) */
   rate sum = {
       {k1.dx.x + 2.0f * k2.dx.x + 2.0f * k3.dx.x + k4.dx.x, k1.dx.y + 2.0f * k2.dx.y + 2.0f * k3.dx.y + k4.dx.y},
-      k1.da + 2.0f * k2.da + 2.0f * k3.da + k4.da,
+      k1.da + 2.0 * k2.da + 2.0 * k3.da + k4.da,
       {k1.dv.x + 2.0f * k2.dv.x + 2.0f * k3.dv.x + k4.dv.x, k1.dv.y + 2.0f * k2.dv.y + 2.0f * k3.dv.y + k4.dv.y},
       k1.dw + 2.0f * k2.dw + 2.0f * k3.dw + k4.dw};
-  *y = advance(c, y, h / 6.0f, &sum);
+  *y = advance(c, y, h / 6.0, &sum);
   return state_finite(y);
 }
 
 bool tb_integrate_free_body(tb_world* w, int index, const tb_step_context* ctx) {
-  float h = ctx->h;
+  double h = ctx->exact_h;
   tb_body* b = tb_body_at(w, index);
   body_ctx c = {w, b, tb_make_body_id(w, index), tb_body_gravity(w, b), ctx->max_linear_speed, ctx->max_angular_speed};
-  state y = {{0.0f, 0.0f}, b->angle, b->linear_velocity, b->angular_velocity};
+  state y = {{0.0f, 0.0f}, 0.0, b->linear_velocity, b->angular_velocity};
   cap_speeds(&c, &y); /* a velocity set beyond the caps */
   bool ok = true;
   for (int k = 0; k < ctx->substeps && ok; ++k) {
@@ -148,7 +153,7 @@ bool tb_integrate_free_body(tb_world* w, int index, const tb_step_context* ctx) 
   if (b->fixed_rotation) y.w = 0.0f;
   if (!ok) return false; /* contain the NaN: this body keeps its old state */
   b->center = tb_two_sum(b->center, tb_add(b->center_residual, y.x), &b->center_residual);
-  b->angle = y.a;
+  b->angle = tb_body_turn(b->angle, &b->angle_residual, y.a);
   b->linear_velocity = y.v;
   b->angular_velocity = y.w;
   tb_body_sync_transform(b);

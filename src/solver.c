@@ -39,6 +39,12 @@ typedef struct tb_body_motion {
   float linear_damping; /* 1 / (1 + h c) */
   float angular_damping;
   int flags;
+  /* the angle turned since the step began, as da but summed in double with
+   * the exact substep dt / substeps: float da rounds once per substep (and
+   * h = fl(dt / n) and h w round), which in a free spin adds up over the
+   * steps; the body's angle takes this one (tb_body_turn). Kept here, not in
+   * the solver body, whose layout the contact solver's gather reads. */
+  double turned;
 } tb_body_motion;
 
 enum { MOTION_FIELD = 1, MOTION_FREE = 2, MOTION_FAULT = 4, MOTION_DYNAMIC = 8, MOTION_JOINTED = 16 };
@@ -86,7 +92,7 @@ static void integrate_velocities(tb_world* w, tb_step_context* ctx, tb_body_moti
   }
 }
 
-static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body_motion* motions) {
+static void integrate_positions(tb_world* w, tb_step_context* ctx, tb_body_motion* motions) {
   tb_solver_body* states = ctx->states;
   float h = ctx->h;
   for (int i = 0; i < w->awake_count; ++i) {
@@ -111,6 +117,7 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, const tb_body
     s->dp = tb_mul_add(s->dp, h, v);
     float dw = h * omega;
     s->da += dw;
+    motions[i].turned += ctx->exact_h * (double)omega;
     /* q <- normalise(q + h w perp(q)): the rotation the anchors see; the angle
      * itself is the exact scalar sum da */
     tb_rot q = {s->dq.c - dw * s->dq.s, s->dq.s + dw * s->dq.c};
@@ -219,6 +226,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.inv_dt = 1.0f / dt;
   ctx.h = h;
   ctx.inv_h = 1.0f / h;
+  ctx.exact_h = (double)dt / (double)substeps;
   ctx.substeps = substeps;
   float most_hertz = TB_CONTACT_MAX_H_OMEGA / (TB_TWO_PI_F * h);
   ctx.contact_hertz = fminf(w->contact_hertz, most_hertz);
@@ -250,6 +258,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
         v, omega, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
     tb_body_motion* m = &motions[i];
     m->flags = b->joint_count > 0 ? MOTION_JOINTED : 0;
+    m->turned = 0.0;
     if (dynamic) {
       m->flags |= MOTION_DYNAMIC | (field ? MOTION_FIELD : 0);
       m->accel = tb_mul_add(tb_body_gravity(w, b), b->inv_mass, b->force);
@@ -290,6 +299,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     tb_joint_tree_solve(w, &ctx, true);
     tb_contact_solver_push_out(w, &ctx);
     integrate_positions(w, &ctx, motions);
+    tb_contact_solver_update_arms(w, &ctx);
     float change = relax_pass(w, &ctx, sub, 0);
     for (int pass = 1; pass < w->relax_iterations && change > TB_RELAX_TOLERANCE; ++pass)
       change = relax_pass(w, &ctx, sub, pass);
@@ -321,7 +331,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       /* compensated: c + residual = center + (residual + dp) exactly */
       tb_vec2 residual;
       tb_vec2 c = tb_two_sum(b->center, tb_add(b->center_residual, s->dp), &residual);
-      float a = b->angle + s->da;
+      float angle_residual = b->angle_residual;
+      float a = tb_body_turn(b->angle, &angle_residual, m->turned);
       if ((m->flags & MOTION_FAULT) || !tb_vec_finite(c) || !isfinite(a) || !tb_vec_finite(s->v) || !isfinite(s->w)) {
         bad += 1; /* contained: the body keeps its state from before the step */
         continue;
@@ -329,6 +340,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       b->center = c;
       b->center_residual = residual;
       b->angle = a;
+      b->angle_residual = angle_residual;
       /* restitution and the relax passes came after the last cap */
       b->linear_velocity = tb_cap_linear_speed(s->v, ctx.max_linear_speed);
       b->angular_velocity = tb_cap_angular_speed(s->w, ctx.max_angular_speed);

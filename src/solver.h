@@ -39,6 +39,7 @@ static inline tb_softness tb_rigid_softness(void) { return (tb_softness){0.0f, 1
 typedef struct tb_step_context {
   float dt, inv_dt; /* the whole step */
   float h, inv_h;   /* one substep */
+  double exact_h;   /* dt / substeps in double (the angle's exact sum) */
   int substeps;
   float contact_hertz, static_hertz; /* dynamic against dynamic, against static/kinematic (after the cap) */
   float contact_damping_ratio;

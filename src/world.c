@@ -680,6 +680,7 @@ static void hash_body(hasher* s, const tb_world* w, int i) {
   hash_vec(s, b->local_center);
   hash_vec(s, b->linear_velocity);
   hash_vec(s, b->force);
+  hash_float(s, b->angle_residual);
   const float f[] = {b->angle,           b->angular_velocity, b->torque,      b->mass,
                      b->inv_mass,        b->inertia,          b->inv_inertia, b->linear_damping,
                      b->angular_damping, b->gravity_scale,    b->sleep_time,  b->sleep_threshold,
@@ -711,7 +712,8 @@ static void hash_contact(hasher* s, int i, const tb_contact* c) {
   hash_int(s, c->shape_a);
   hash_int(s, c->shape_b);
   hash_int(s, (int)c->flags);
-  const float f[] = {c->friction, c->restitution, c->rolling_resistance, c->tangent_speed, c->rolling_impulse};
+  const float f[] = {c->friction,      c->restitution,     c->rolling_resistance,
+                     c->tangent_speed, c->rolling_impulse, c->impact_depth};
   hash_floats(s, f, sizeof f / sizeof f[0]);
   const tb_manifold* m = &c->manifold;
   hash_vec(s, m->normal);

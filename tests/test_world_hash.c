@@ -565,6 +565,7 @@ START_TEST(carried_state_is_hashed) {
   POKE(float, c->manifold.points[0].tangent_impulse, c->manifold.points[0].tangent_impulse + 1.0f);
   POKE(uint32_t, c->manifold.points[0].id, c->manifold.points[0].id + 1u);
   POKE(float, c->rolling_impulse, c->rolling_impulse + 1.0f);
+  POKE(float, c->impact_depth, c->impact_depth + 1.0e-3f);
   POKE(float, c->friction, c->friction + 1.0f);
   POKE(uint32_t, c->flags, c->flags ^ (uint32_t)TB_CONTACT_ENABLED);
   /* a joint's accumulated impulses and the substep they belong to */
@@ -577,6 +578,7 @@ START_TEST(carried_state_is_hashed) {
   tb_body* b = tb_body_at(w, s.box.index1 - 1);
   POKE(float, b->sleep_time, b->sleep_time + 0.25f);
   POKE(float, b->center_residual.x, b->center_residual.x + 1.0e-9f);
+  POKE(float, b->angle_residual, b->angle_residual + 1.0e-9f);
   POKE(int, w->awake[0], w->awake[1]);
   /* the fat box of the box's proxy */
   const tb_shape* sh = tb_shape_at(w, s.box_shape.index1 - 1);
