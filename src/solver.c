@@ -275,6 +275,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     tb_joint_tree_solve(w, &ctx, true);
     tb_contact_solver_push_out(w, &ctx);
     integrate_positions(w, &ctx, motions);
+    ctx.bodies_moved = true;
     float change = relax_pass(w, &ctx, sub, 0);
     for (int pass = 1; pass < w->relax_iterations && change > TB_RELAX_TOLERANCE; ++pass)
       change = relax_pass(w, &ctx, sub, pass);
