@@ -180,7 +180,7 @@ static inline void point_contact(local_manifold* m, tb_vec2 pa, tb_vec2 pb, floa
   m->normal = n;
   /* A's surface is pa + ra n, B's is pa + (dist - rb) n: midway is ra + sep / 2 */
   add_point(m, tb_mul_add(pa, ra + 0.5f * sep, n), sep, 0u);
-  set_point_patch(m, -(ra + 0.5f * sep), rb + 0.5f * sep, ra + rb);
+  if (dist > FLT_EPSILON && ra + rb > 0.0f) set_point_patch(m, -(ra + 0.5f * sep), rb + 0.5f * sep, ra + rb);
 }
 
 /* ------------------------------------------------------ circle contacts -- */
@@ -475,7 +475,8 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
   float r = fp->ref->radius + fp->inc->radius;
   tb_vec2 n = fp->n;
   float sep = fp->s - r;
-  if (dist > TB_CORE_GAP_TOLERANCE) {
+  bool apart = dist > TB_CORE_GAP_TOLERANCE;
+  if (apart) {
     n = tb_scale(1.0f / dist, d);
     sep = dist - r;
   }
@@ -486,9 +487,10 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
   feature_at(fi, fp->j1, fp->j2, &ii, &it);
   m->normal = fp->flip ? tb_neg(n) : n;
   add_point(m, tb_mul_add(cr, fp->ref->radius + 0.5f * sep, n), sep, pair_id(fp, ri, rt, ii, it));
-  /* two vertices: the gap follows their roundings (a vertex against an edge's
-   * interior, in the degenerate cases, keeps its gap: no patch) */
-  if (rt == TB_FEATURE_VERTEX && it == TB_FEATURE_VERTEX) {
+  /* two vertices apart: the gap follows their roundings (a vertex against an
+   * edge's interior, in the degenerate cases, keeps its gap, and so do
+   * vertices that touch, whose normal is the face's: no patch) */
+  if (apart && r > 0.0f && rt == TB_FEATURE_VERTEX && it == TB_FEATURE_VERTEX) {
     float to_ref = fp->ref->radius + 0.5f * sep, to_inc = fp->inc->radius + 0.5f * sep;
     if (fp->flip)
       set_point_patch(m, -to_inc, to_ref, r);

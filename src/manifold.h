@@ -42,9 +42,11 @@ static inline uint32_t tb_make_feature_id(uint32_t index_a, uint32_t type_a, uin
  * along t, whose gap is sqrt(x^2 + core_gap^2) - radius (radius: the two
  * cores' radii). A face contact ends where its features stop overlapping
  * (slide_min <= 0 <= slide_max; both offsets at the incident core); a vertex
- * against a vertex (or a circle) has slide_min = slide_max = 0, offsets at
- * each core, so its gap follows the cores' curvature; contacts that do not
- * end (a chain face that runs on into its neighbour) have -FLT_MAX, FLT_MAX.
+ * against a vertex, apart and with a rounding (a circle on a corner), has
+ * slide_min = slide_max = 0, offsets at each core, so its gap follows the
+ * rounding's curvature (two sharp corners do not: sliding, a corner meets
+ * the other's edge, not a growing gap); contacts that do not end (a chain
+ * face that runs on into its neighbour) have -FLT_MAX, FLT_MAX.
  * A face contact also gives the reference face's ends (in A's frame, on its core):
  * end_max is where the patch ends for d > 0, end_min for d < 0, and the
  * face's normal points towards the incident shape (reference_normal). */
