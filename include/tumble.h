@@ -4,6 +4,14 @@
  *
  * Conventions
  * - Units: metres, kilograms, seconds, radians. Tuned for objects of 0.05 to 50 m.
+ * - Mass ratios: supported up to 1e3:1 between bodies that touch or are jointed
+ *   (60 Hz, 4 substeps). Contacts are springs of contact_hertz, so a light body
+ *   under a heavy one sinks by the load over its spring: a 1 kg box under 1 t sinks
+ *   3 cm, under 10 t it is crushed through (the spring would need 24 cm). Joints
+ *   open with the ratio: 5 mm at 1e3 (1 m link), 2.4 cm at 1e4, 11 cm at 1e6; 8
+ *   substeps quarter that, but do not stiffen contacts. Beyond the range nothing
+ *   is reported: the stress suite's mass_ratio_edge table (results/STRESS.md)
+ *   shows how it fails.
  * - Objects are reached through handles (tb_world_id, tb_body_id, tb_shape_id) that
  *   carry a generation: a stale handle (its object, or its whole world, was
  *   destroyed) or a foreign one is reported as an error, never dereferenced. No

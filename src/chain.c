@@ -12,6 +12,7 @@
  *   is closer to the contact normal keeps it, so exactly one reports it. */
 #include "chain.h"
 
+#include <float.h>
 #include <stdlib.h>
 
 #include "geometry.h"
@@ -175,9 +176,16 @@ static const char* check_chain_segment(const tb_chain_segment* cs) {
   return why;
 }
 
+/* Whether the chain runs on past a segment end without a convex corner (flat
+ * or concave joint): the neighbour's face takes over from this one there.
+ * turn: the cross product of the earlier and the later edge at the joint. */
+static bool runs_on(tb_vec2 neighbour, float turn) { return tb_length_sq(neighbour) > 0.0f && turn >= 0.0f; }
+
 /* The filter described at the top, in the chain segment's frame. center_b is
- * B's centre (world). */
-static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_vec2 center_b, tb_manifold m) {
+ * B's centre (world). A face contact's patch (tb_patch) does not end at a
+ * flat or concave joint: what slides past it is on the neighbour's face. */
+static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_vec2 center_b, tb_manifold m,
+                             tb_patch* patch) {
   tb_vec2 p1 = cs->segment.point1, p2 = cs->segment.point2;
   tb_vec2 e = tb_sub(p2, p1);
   tb_vec2 n = tb_normalize(tb_left_perp(e));
@@ -186,7 +194,13 @@ static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_ve
   tb_vec2 nm = tb_inv_rotate(xfa.q, m.normal);
   float face = tb_dot(nm, n);
   if (face <= 0.0f) return no_contact;
-  if (face >= 1.0f - 1.0e-4f) return m;
+  if (face >= 1.0f - 1.0e-4f) {
+    /* the patch's tangent right_perp(n) runs along e: slide_max at p2 */
+    tb_vec2 before = tb_sub(p1, cs->ghost1), after = tb_sub(cs->ghost2, p2);
+    if (patch != NULL && runs_on(before, tb_cross(before, e))) patch->slide_min = -FLT_MAX;
+    if (patch != NULL && runs_on(after, tb_cross(e, after))) patch->slide_max = FLT_MAX;
+    return m;
+  }
   /* a vertex region: which end is it at? */
   tb_vec2 local = tb_inv_transform_point(xfa, m.points[0].point);
   bool at_start = tb_dot(tb_sub(local, p1), e) < 0.5f * tb_dot(e, e);
@@ -194,7 +208,7 @@ static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_ve
   if (tb_length_sq(neighbour) == 0.0f) return m; /* the open end of a chain: a real corner */
   /* convex for a left-facing chain: the path turns clockwise at the joint */
   float turn = at_start ? tb_cross(neighbour, e) : tb_cross(e, neighbour);
-  if (turn >= 0.0f) return no_contact; /* flat or concave: the neighbour's face owns it */
+  if (runs_on(neighbour, turn)) return no_contact; /* flat or concave: the neighbour's face owns it */
   tb_vec2 nn = tb_normalize(tb_left_perp(neighbour));
   float other = tb_dot(nm, nn);
   bool mine = at_start ? face > other : face >= other; /* ties go to the earlier segment */
@@ -202,24 +216,24 @@ static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_ve
 }
 
 tb_manifold tb_collide_chain_segment_and_circle_unchecked(const tb_chain_segment* a, tb_transform xfa,
-                                                          const tb_circle* b, tb_transform xfb) {
-  tb_manifold m = tb_collide_segment_and_circle_unchecked(&a->segment, xfa, b, xfb);
+                                                          const tb_circle* b, tb_transform xfb, tb_patch* patch) {
+  tb_manifold m = tb_collide_segment_and_circle_unchecked(&a->segment, xfa, b, xfb, patch);
   if (m.point_count == 0) return m;
-  return one_sided(a, xfa, tb_transform_point(xfb, b->center), m);
+  return one_sided(a, xfa, tb_transform_point(xfb, b->center), m, patch);
 }
 
 tb_manifold tb_collide_chain_segment_and_capsule_unchecked(const tb_chain_segment* a, tb_transform xfa,
-                                                           const tb_capsule* b, tb_transform xfb) {
-  tb_manifold m = tb_collide_segment_and_capsule_unchecked(&a->segment, xfa, b, xfb);
+                                                           const tb_capsule* b, tb_transform xfb, tb_patch* patch) {
+  tb_manifold m = tb_collide_segment_and_capsule_unchecked(&a->segment, xfa, b, xfb, patch);
   if (m.point_count == 0) return m;
-  return one_sided(a, xfa, tb_transform_point(xfb, tb_lerp(b->center1, b->center2, 0.5f)), m);
+  return one_sided(a, xfa, tb_transform_point(xfb, tb_lerp(b->center1, b->center2, 0.5f)), m, patch);
 }
 
 tb_manifold tb_collide_chain_segment_and_polygon_unchecked(const tb_chain_segment* a, tb_transform xfa,
-                                                           const tb_polygon* b, tb_transform xfb) {
-  tb_manifold m = tb_collide_segment_and_polygon_unchecked(&a->segment, xfa, b, xfb);
+                                                           const tb_polygon* b, tb_transform xfb, tb_patch* patch) {
+  tb_manifold m = tb_collide_segment_and_polygon_unchecked(&a->segment, xfa, b, xfb, patch);
   if (m.point_count == 0) return m;
-  return one_sided(a, xfa, tb_transform_point(xfb, b->centroid), m);
+  return one_sided(a, xfa, tb_transform_point(xfb, b->centroid), m, patch);
 }
 
 /* The public forms check their arguments as the other tb_collide_* do (see
@@ -230,7 +244,7 @@ tb_manifold tb_collide_chain_segment_and_circle(const tb_chain_segment* a, tb_tr
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(check_chain_segment, a), xfa, b,
                           TB_COLLIDE_WHY(tb_check_circle, b), xfb))
     return no_contact;
-  return tb_collide_chain_segment_and_circle_unchecked(a, xfa, b, xfb);
+  return tb_collide_chain_segment_and_circle_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_transform xfa, const tb_capsule* b,
@@ -238,7 +252,7 @@ tb_manifold tb_collide_chain_segment_and_capsule(const tb_chain_segment* a, tb_t
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(check_chain_segment, a), xfa, b,
                           TB_COLLIDE_WHY(tb_check_capsule, b), xfb))
     return no_contact;
-  return tb_collide_chain_segment_and_capsule_unchecked(a, xfa, b, xfb);
+  return tb_collide_chain_segment_and_capsule_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_transform xfa, const tb_polygon* b,
@@ -246,5 +260,5 @@ tb_manifold tb_collide_chain_segment_and_polygon(const tb_chain_segment* a, tb_t
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(check_chain_segment, a), xfa, b,
                           TB_COLLIDE_WHY(tb_check_polygon, b), xfb))
     return no_contact;
-  return tb_collide_chain_segment_and_polygon_unchecked(a, xfa, b, xfb);
+  return tb_collide_chain_segment_and_polygon_unchecked(a, xfa, b, xfb, NULL);
 }

@@ -1,10 +1,13 @@
 /* Contacts: creation from broad-phase pairs, the narrow phase and its events. */
 #include "contact.h"
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
 
+#include "broad_phase.h"
+#include "geometry.h"
 #include "manifold.h"
 #include "math_internal.h"
 #include "world.h"
@@ -17,11 +20,13 @@
  * the returned one. These are the unchecked forms of the public tb_collide_*
  * functions: the shapes were vetted when they were made. */
 
-typedef void collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out);
+typedef void collide_fn(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out,
+                        tb_patch* patch);
 
-#define COLLIDE(name, fa, fb, call)                                                                              \
-  static void name(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out) { \
-    *out = call(&a->geom.fa, xfa, &b->geom.fb, xfb);                                                             \
+#define COLLIDE(name, fa, fb, call)                                                                            \
+  static void name(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out, \
+                   tb_patch* patch) {                                                                          \
+    *out = call(&a->geom.fa, xfa, &b->geom.fb, xfb, patch);                                                    \
   }
 COLLIDE(circles, circle, circle, tb_collide_circles_unchecked)
 COLLIDE(capsule_circle, capsule, circle, tb_collide_capsule_and_circle_unchecked)
@@ -36,8 +41,9 @@ COLLIDE(chain_capsule, chain_segment, capsule, tb_collide_chain_segment_and_caps
 COLLIDE(chain_polygon, chain_segment, polygon, tb_collide_chain_segment_and_polygon_unchecked)
 #undef COLLIDE
 
-static void polygons(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out) {
-  tb_collide_polygons_into(&a->geom.polygon, xfa, &b->geom.polygon, xfb, out);
+static void polygons(const tb_shape* a, tb_transform xfa, const tb_shape* b, tb_transform xfb, tb_manifold* out,
+                     tb_patch* patch) {
+  tb_collide_polygons_into(&a->geom.polygon, xfa, &b->geom.polygon, xfb, out, patch);
 }
 
 /* [type of A][type of B]; NULL where the pair is taken the other way round */
@@ -302,6 +308,70 @@ static void carry_impulses(const tb_manifold* old, tb_manifold* m) {
     }
 }
 
+/* ---- where a face runs on ------------------------------------------------------
+ * A face contact's patch ends where its reference face ends (tb_patch), and a
+ * body that slides past that within a step is let go by the solver. Where
+ * another solid shape continues the face (tiles laid side by side) or closes
+ * the corner (walls that meet), the body could only get past the end by
+ * going through that shape, which may not be among its contacts yet (a
+ * bullet along a wall, 3 m from the corner, moves 3 m a step): letting go
+ * there would let it out of the corner. So a patch end that the bodies can
+ * reach this step (the solver asks, see tb_contact_extend_patch) is kept only if no
+ * other solid shape that the incident shape collides with holds either of
+ * two points one slop from it: back along the face and off it (where the
+ * incident passes to reach the end), or past it and under the face line
+ * (where a floor would run on). Chains decide their joints themselves. */
+
+typedef struct cover_query {
+  const tb_world* w;
+  const tb_contact* c;
+  const tb_shape* incident;
+  tb_vec2 point[2];
+  bool covered;
+} cover_query;
+
+static bool cover_callback(int32_t proxy, int32_t index, void* context) {
+  (void)proxy;
+  cover_query* q = context;
+  if (index == q->c->shape_a || index == q->c->shape_b) return true;
+  const tb_shape* s = tb_shape_at(q->w, index);
+  if (s->sensor || !tb_filters_collide(s->filter, q->incident->filter)) return true;
+  tb_transform xf = tb_body_at(q->w, s->body)->transform;
+  q->covered = tb_shape_geom_contains(s, xf, q->point[0]) || tb_shape_geom_contains(s, xf, q->point[1]);
+  return !q->covered;
+}
+
+/* Whether the face runs on at its end `local_end` (A's frame), which lies
+ * along `out` (world) from the patch (see above). */
+static __attribute__((noinline)) bool face_runs_on(const tb_world* w, const tb_contact* c, tb_vec2 local_end,
+                                                   tb_vec2 out) {
+  tb_transform xfa = tb_body_at(w, c->edges[0].body)->transform;
+  tb_vec2 end = tb_transform_point(xfa, local_end), normal = tb_rotate(xfa.q, c->patch.reference_normal);
+  /* the incident shape: B's when A's face is the reference */
+  bool b_incident = tb_dot(normal, c->manifold.normal) > 0.0f;
+  const tb_shape* incident = tb_shape_at(w, b_incident ? c->shape_b : c->shape_a);
+  const float e = TB_LINEAR_SLOP;
+  cover_query q = {w,
+                   c,
+                   incident,
+                   {tb_add(end, tb_add(tb_scale(-e, out), tb_scale(e, normal))),
+                    tb_add(end, tb_add(tb_scale(e, out), tb_scale(-e, normal)))},
+                   false};
+  tb_aabb box = {{fminf(q.point[0].x, q.point[1].x), fminf(q.point[0].y, q.point[1].y)},
+                 {fmaxf(q.point[0].x, q.point[1].x), fmaxf(q.point[0].y, q.point[1].y)}};
+  for (int t = 0; t < 3 && !q.covered; ++t)
+    tb_tree_query(&w->broad_phase.trees[t], box, UINT64_MAX, cover_callback, &q);
+  return q.covered;
+}
+
+void tb_contact_extend_patch(const tb_world* w, tb_contact* c, float reach) {
+  tb_patch* p = &c->patch;
+  if (!p->face || c->manifold.point_count == 0) return;
+  tb_vec2 t = tb_right_perp(c->manifold.normal);
+  if (p->slide_max < reach && face_runs_on(w, c, p->end_max, t)) p->slide_max = FLT_MAX;
+  if (p->slide_min > -reach && face_runs_on(w, c, p->end_min, tb_neg(t))) p->slide_min = -FLT_MAX;
+}
+
 /* Updates one contact; false when it was destroyed (bounding boxes apart). */
 static bool update_contact(tb_world* w, int i) {
   const tb_broad_phase* bp = &w->broad_phase;
@@ -315,7 +385,7 @@ static bool update_contact(tb_world* w, int i) {
   }
   tb_manifold old = c->manifold;
   collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb, tb_body_at(w, sb->body)->transform,
-                                    &c->manifold);
+                                    &c->manifold, &c->patch);
   carry_impulses(&old, &c->manifold);
   bool touching = c->manifold.point_count > 0;
   if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */

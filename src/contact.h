@@ -2,6 +2,7 @@
 #ifndef TB_CONTACT_H
 #define TB_CONTACT_H
 
+#include "manifold.h"
 #include "tumble.h"
 
 enum {
@@ -22,6 +23,7 @@ typedef struct tb_contact {
   int shape_a, shape_b; /* ordered so that a collide function takes (A, B) */
   tb_contact_edge edges[2];
   tb_manifold manifold; /* points carry the impulses kept for warm starting */
+  tb_patch patch;       /* where the touching features end (the solver stops a point that slid off) */
   float friction, restitution;
   float rolling_resistance; /* coefficient times radius (m) */
   float tangent_speed;
@@ -46,6 +48,10 @@ void tb_contacts_destroy_of_body(struct tb_world* w, int body, int shape);
  * sensor events, wakes sleeping bodies that start being touched, and lists
  * the touching contacts the solver must handle in world->step_contacts. */
 void tb_contacts_update(struct tb_world* w);
+/* Removes the ends of c's patch that lie within reach (m, how far the bodies
+ * can slide this step) where another solid shape continues the face or
+ * closes the corner (see contact.c). */
+void tb_contact_extend_patch(const struct tb_world* w, tb_contact* c, float reach);
 /* Whether a pair of shape types has a manifold function (segment-segment has none). */
 bool tb_shape_types_collide(tb_shape_type a, tb_shape_type b);
 

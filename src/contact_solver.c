@@ -80,13 +80,18 @@ typedef struct tb_wide_point {
   /* the normal impulses applied in the step, summed, and summed times the
    * arms they were applied at (restitution's J_e) */
   tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
-  tb_f4 shift_a, shift_b; /* the common point's share of the relative displacement, per arm (see arms_now) */
+  tb_f4 shift_a, shift_b;    /* the common point's share of the relative displacement, per arm (see arms_now) */
+  tb_f4 collided_separation; /* s0 as collided; base_separation differs past the patch's end (measure_slide) */
 } tb_wide_point;
 
 typedef struct tb_wide_contact {
   tb_f4 nx, ny, friction, tangent_speed, rolling_resistance, rolling_mass, rolling_impulse;
   tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
   tb_f4 shift_limit;    /* how far (per axis) the arms follow the relative displacement (see arms_now) */
+  /* the contact patch (tb_patch): how far B's incident core may slide along
+   * the tangent before the features part, the normal distances from each
+   * centre of mass to where that slide is measured, and the cores' radii */
+  tb_f4 slide_min, slide_max, lever_a, lever_b, core_radius;
   tb_f4 bias_rate, mass_scale;
   /* both points' normal impulses solved together: K (symmetric) and its inverse */
   tb_f4 k11, k12, k22, n11, n12, n22, block; /* block: 1 where both points are solved together */
@@ -94,6 +99,7 @@ typedef struct tb_wide_contact {
   int32_t a[4], b[4]; /* solver bodies */
   int32_t rolling;    /* any lane with rolling resistance */
   int32_t bouncy;     /* any lane with restitution (which needs the arms the impulses acted at) */
+  int32_t slid_off;   /* any lane past its patch by more than TB_SLIDE_TOLERANCE */
 } tb_wide_contact;
 
 /* What a contact constraint keeps besides its lane: where the lane is, and
@@ -140,6 +146,7 @@ static inline tb_contact* step_contact(tb_world* w, int k) {
 static inline tb_f4 splat(float x) { return (tb_f4){x, x, x, x}; }
 static inline tb_f4 blend(tb_i4 mask, tb_f4 a, tb_f4 b) { return (tb_f4)(((tb_i4)a & mask) | ((tb_i4)b & ~mask)); }
 static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return blend(a > b, a, b); }
+static inline tb_f4 fabs4(tb_f4 a) { return (tb_f4)((tb_i4)a & (tb_i4){INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX}); }
 static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return blend(a < b, a, b); }
 
 /* Four solver bodies, field by field. A solver body begins with two rows of
@@ -300,6 +307,20 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 mass_share = mb * inverse_or_zero(ma + mb); /* beta by the inverse masses (see arms_now) */
   tb_i4 both_move = (ma > zero) & (mb > zero);
   wc->shift_limit = min4(LANES(ba, max_extent), LANES(bb, max_extent));
+  /* A patch end within reach of this step (how far the bodies can slide:
+   * |dv|_1 >= |dv| bounds their relative speed without a square root) may lie
+   * where the face runs on into another shape: the contact decides. */
+  tb_f4 speed = (fabs4(B.vx - A.vx) + fabs4(B.vy - A.vy)) +
+                (fabs4(A.w) * LANES(ba, max_extent) + fabs4(B.w) * LANES(bb, max_extent));
+  tb_f4 reach = speed * splat(ctx->dt) + splat(TB_LINEAR_SLOP);
+  tb_i4 near_end = (LANES(c, patch.slide_max) < reach) | (LANES(c, patch.slide_min) > -reach);
+  for (int lane = 0; lane < 4; ++lane)
+    if (near_end[lane] && k[lane] >= 0)
+      tb_contact_extend_patch(w, (tb_contact*)tb_pool_at(&w->contacts, w->step_contacts[k[lane]]), reach[lane]);
+  wc->slide_min = LANES(c, patch.slide_min);
+  wc->slide_max = LANES(c, patch.slide_max);
+  wc->core_radius = LANES(c, patch.radius);
+  wc->slid_off = 0; /* nothing has moved yet: within every patch */
   tb_f4 cax = LANES(ba, center.x), cay = LANES(ba, center.y), cbx = LANES(bb, center.x), cby = LANES(bb, center.y);
   const tb_i4 dynamic = {TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY};
   tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
@@ -315,6 +336,10 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_f4 rbx = LANES(c, manifold.points[p].point.x) - cbx, rby = LANES(c, manifold.points[p].point.y) - cby;
     tb_f4 normal_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].normal_impulse) : zero;
     tb_f4 tangent_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].tangent_impulse) : zero;
+    if (p == 0) { /* the points lie on one line across the normal: the first one's levers serve both */
+      wc->lever_a = rax * nx + ray * ny + LANES(c, patch.offset_a);
+      wc->lever_b = rbx * nx + rby * ny + LANES(c, patch.offset_b);
+    }
     wp->rax = blend(used, rax, zero);
     wp->ray = blend(used, ray, zero);
     wp->rbx = blend(used, rbx, zero);
@@ -345,6 +370,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_f4 beta = blend(vertex_b, one, blend(vertex_a, zero, mass_share));
     wp->shift_a = beta;
     wp->shift_b = beta - one;
+    wp->collided_separation = wp->base_separation;
     /* (v_B + w_B x rb - v_A - w_A x ra) . n */
     tb_f4 vax = A.vx + -A.w * ray, vay = A.vy + A.w * rax;
     tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
@@ -394,7 +420,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
 static void clear_lane(tb_wide_contact* wc, int lane, int static_index) {
   tb_f4* fields = (tb_f4*)wc;
   for (size_t f = 0; f < offsetof(tb_wide_contact, a) / sizeof(tb_f4); ++f) fields[f][lane] = 0.0f;
-  wc->p[0].base_separation[lane] = wc->p[1].base_separation[lane] = 1.0f;
+  for (int p = 0; p < 2; ++p) wc->p[p].base_separation[lane] = wc->p[p].collided_separation[lane] = 1.0f;
   wc->a[lane] = wc->b[lane] = static_index;
 }
 
@@ -584,17 +610,71 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
   scatter(states, c->b, &B);
 }
 
+/* How far one point's anchors have moved apart along the normal since the
+ * step began, to first order in the angles (see the top); the separation
+ * now is this plus base_separation. */
+static inline tb_f4 normal_motion(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
+                                  const wide_body* B) {
+  /* da x r = (-da r.y, da r.x), as tb_cross_sv */
+  tb_f4 prax = -A->da * cp->ray, pray = A->da * cp->rax;
+  tb_f4 prbx = -B->da * cp->rby, prby = B->da * cp->rbx;
+  tb_f4 dpx = B->dpx - A->dpx, dpy = B->dpy - A->dpy;
+  return (dpx + (prbx - prax)) * c->nx + (dpy + (prby - pray)) * c->ny;
+}
+
+/* Leaving an edge. The manifold is collided once per step, but within the
+ * step a body can slide off the end of the face that holds it up (a ball
+ * rolling off a table, a box sliding off a ledge): its face points would go
+ * on pushing along the face normal for the rest of the step, as if the face
+ * ran on, and hold it up for up to a whole step (the ball then lands up to
+ * v dt further out). So after each position update the solver measures how
+ * far B's core has slid along the tangent relative to A since the step
+ * began (to first order in the angles, on the cores: a rolling ball's centre
+ * moves, its contact point does not),
+ *   d = t . (dp_B - dp_A) - da_B lever_B + da_A lever_A,
+ * and how far x that is past the patch (see tb_patch). Past it, what is left
+ * of the contact is the two cores' ends, x apart along t, whose gap is
+ *   sqrt(x^2 + (s + R)^2) - R     (R the cores' radii, s + R their gap along n):
+ * a ball that has rolled past a corner by x is held by it only where it
+ * would sink below x^2 / 2R, a sharp corner hardly at all; a ball on a ball
+ * (a patch of one point) sees their curvature. The points' base separations
+ * are set so that their separations are that gap until the next position
+ * update (the passes in between, and the push-out, cost nothing more). Below
+ * TB_SLIDE_TOLERANCE past the patch (m) the contact is left as collided: a
+ * resting ball's jitter on another ball changes its gap by x^2 / 2R, far
+ * below float rounding, and a face point goes on for at most that much of
+ * slide (0.17 ms at 3 m/s). */
+#define TB_SLIDE_TOLERANCE (0.1f * TB_LINEAR_SLOP)
+
+/* the base separations of a block with a lane past its patch, or that had one */
+static __attribute__((noinline)) void set_slide_gaps(tb_wide_contact* c, const wide_body* A, const wide_body* B,
+                                                     tb_f4 beyond) {
+  tb_i4 off = beyond > splat(TB_SLIDE_TOLERANCE);
+  c->slid_off = off[0] | off[1] | off[2] | off[3];
+  for (int p = 0; p < 2; ++p) {
+    tb_wide_point* cp = &c->p[p];
+    tb_f4 moved = normal_motion(c, cp, A, B), s = moved + cp->collided_separation;
+    tb_f4 gap = max4(s + c->core_radius, splat(0.0f)), squared = beyond * beyond + gap * gap, ends;
+    for (int lane = 0; lane < 4; ++lane) ends[lane] = sqrtf(squared[lane]);
+    cp->base_separation = blend(off, (ends - c->core_radius) - moved, cp->collided_separation);
+  }
+}
+
+static inline void measure_slide(tb_wide_contact* c, const wide_body* A, const wide_body* B) {
+  tb_f4 d = c->ny * (B->dpx - A->dpx) - c->nx * (B->dpy - A->dpy) - B->da * c->lever_b + A->da * c->lever_a;
+  tb_f4 beyond = max4(c->slide_min - d, d - c->slide_max);
+  tb_i4 off = beyond > splat(TB_SLIDE_TOLERANCE);
+  /* the common case: nothing past its patch now or before */
+  if ((off[0] | off[1] | off[2] | off[3]) || c->slid_off) set_slide_gaps(c, A, B, beyond);
+}
+
 /* The soft terms of one point's normal impulse: its mass scale, and
  * r = v_n + bias, with the separation s predicted from the bodies' motion. */
 static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_arms* arms,
                                   const wide_body* A, const wide_body* B, float inv_h, float push, bool use_bias,
                                   tb_f4* mass_scale) {
   const tb_f4 zero = splat(0.0f), one = splat(1.0f);
-  /* da x r = (-da r.y, da r.x), as tb_cross_sv */
-  tb_f4 prax = -A->da * cp->ray, pray = A->da * cp->rax;
-  tb_f4 prbx = -B->da * cp->rby, prby = B->da * cp->rbx;
-  tb_f4 dpx = B->dpx - A->dpx, dpy = B->dpy - A->dpy;
-  tb_f4 s = (dpx + (prbx - prax)) * c->nx + (dpy + (prby - pray)) * c->ny + cp->base_separation;
+  tb_f4 s = normal_motion(c, cp, A, B) + cp->base_separation;
   tb_i4 speculative = s > zero;
   tb_f4 bias;
   if (use_bias) {
@@ -628,7 +708,7 @@ static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, const w
 /* Always inlined: the biased and the relax pass each get a copy without the
  * other's branches. */
 static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h,
-                                                             float push, bool use_bias, tb_f4* change) {
+                                                             float push, bool use_bias, bool measure, tb_f4* change) {
   wide_body A = gather(states, c->a), B = gather(states, c->b);
   const tb_f4 zero = splat(0.0f);
   tb_wide_point *p1 = &c->p[0], *p2 = &c->p[1];
@@ -639,6 +719,7 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
    * x = -mass_scale m_n r: a new total that does not depend on a. */
   wide_arms arms1 = stored_arms(p1), arms2 = stored_arms(p2);
   tb_f4 ms1, ms2;
+  if (measure) measure_slide(c, &A, &B); /* once per position update: later passes see the same positions */
   tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, inv_h, push, use_bias, &ms1);
   tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, inv_h, push, use_bias, &ms2);
   tb_f4 a1 = p1->normal_impulse, a2 = p2->normal_impulse;
@@ -829,13 +910,22 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   tb_f4 change = splat(0.0f);
   int n = w->wide_count, first = backward ? n - 1 : 0, step = backward ? -1 : 1;
+  /* The patches are measured in the first pass after a position update (the
+   * first relax pass); the biased pass of the next substep sees the same
+   * positions, and the first substep's the step start, where every contact
+   * is within its patch. */
+  bool measure = !use_bias && ctx->bodies_moved;
+  if (measure) ctx->bodies_moved = false;
   /* one loop per pass kind, each with solve_wide specialised for it */
   if (use_bias)
     for (int i = 0, b = first; i < n; ++i, b += step)
-      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true, &change);
+      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true, false, &change);
+  else if (measure)
+    for (int i = 0, b = first; i < n; ++i, b += step)
+      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, true, &change);
   else
     for (int i = 0, b = first; i < n; ++i, b += step)
-      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, &change);
+      solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, false, &change);
   return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }
 

@@ -93,6 +93,8 @@ typedef struct local_manifold {
   float sep[2];
   uint32_t id[2];
   int count;
+  bool bounded;   /* the touching features end: patch is set (else unbounded) */
+  tb_patch patch; /* see manifold.h */
 } local_manifold;
 
 static inline void add_point(local_manifold* m, tb_vec2 p, float sep, uint32_t id) {
@@ -114,14 +116,26 @@ static inline void world_parts(const local_manifold* l, tb_transform xfa, tb_vec
   if (l->count > 1) *p1 = (tb_manifold_point){tb_transform_point(xfa, l->point[1]), l->sep[1], l->id[1], 0.0f, 0.0f};
 }
 
-static inline tb_manifold to_world(const local_manifold* l, tb_transform xfa) {
+/* The patch of l (unbounded unless a face contact set it); the slide range
+ * is a distance along the tangent, the same in A's frame and in world (the
+ * ends stay in A's frame: they are rarely needed). */
+static inline void store_patch(const local_manifold* l, tb_patch* patch) {
+  if (patch == NULL) return;
+  if (l->bounded && l->count > 0)
+    *patch = l->patch;
+  else
+    *patch = (tb_patch){.slide_min = -FLT_MAX, .slide_max = FLT_MAX};
+}
+
+static inline tb_manifold to_world(const local_manifold* l, tb_transform xfa, tb_patch* patch) {
   tb_vec2 n;
   tb_manifold_point p0, p1;
   world_parts(l, xfa, &n, &p0, &p1);
+  store_patch(l, patch);
   return (tb_manifold){n, {p0, p1}, l->count};
 }
 
-static inline void store_world(const local_manifold* l, tb_transform xfa, tb_manifold* out) {
+static inline void store_world(const local_manifold* l, tb_transform xfa, tb_manifold* out, tb_patch* patch) {
   tb_vec2 n;
   tb_manifold_point p0, p1;
   world_parts(l, xfa, &n, &p0, &p1);
@@ -129,6 +143,29 @@ static inline void store_world(const local_manifold* l, tb_transform xfa, tb_man
   out->points[0] = p0;
   out->points[1] = p1;
   out->point_count = l->count;
+  store_patch(l, patch);
+}
+
+/* The patch of a face contact (normal n, A to B, A's frame): A's feature
+ * spans a1-a2 and B's b1-b2 (b1 = b2 for a point), offset and radius as in
+ * tb_patch. B keeps touching while its feature, moved by d along
+ * t = right_perp(n), overlaps A's: a_min <= b_max + d and b_min + d <= a_max. */
+static inline void set_patch(local_manifold* m, tb_vec2 n, tb_vec2 a1, tb_vec2 a2, tb_vec2 b1, tb_vec2 b2, float offset,
+                             float radius) {
+  tb_vec2 t = tb_right_perp(n);
+  float ua1 = tb_dot(t, a1), ua2 = tb_dot(t, a2), ub1 = tb_dot(t, b1), ub2 = tb_dot(t, b2);
+  float a_min = ua1 < ua2 ? ua1 : ua2, a_max = ua1 < ua2 ? ua2 : ua1;
+  float b_min = ub1 < ub2 ? ub1 : ub2, b_max = ub1 < ub2 ? ub2 : ub1;
+  m->bounded = true;
+  m->patch = (tb_patch){a_min - b_max,       a_max - b_min,       offset, offset, radius, true,
+                        ua1 < ua2 ? a1 : a2, ua1 < ua2 ? a2 : a1, n};
+}
+
+/* The patch of a contact between two core points, A's offset_a and B's
+ * offset_b along the normal from the manifold point. */
+static inline void set_point_patch(local_manifold* m, float offset_a, float offset_b, float radius) {
+  m->bounded = true;
+  m->patch = (tb_patch){.offset_a = offset_a, .offset_b = offset_b, .radius = radius};
 }
 
 /* One contact between core points pa (on A) and pb (on B), A's frame, radii ra
@@ -143,15 +180,17 @@ static inline void point_contact(local_manifold* m, tb_vec2 pa, tb_vec2 pb, floa
   m->normal = n;
   /* A's surface is pa + ra n, B's is pa + (dist - rb) n: midway is ra + sep / 2 */
   add_point(m, tb_mul_add(pa, ra + 0.5f * sep, n), sep, 0u);
+  if (dist > FLT_EPSILON && ra + rb > 0.0f) set_point_patch(m, -(ra + 0.5f * sep), rb + 0.5f * sep, ra + rb);
 }
 
 /* ------------------------------------------------------ circle contacts -- */
 
-tb_manifold tb_collide_circles_unchecked(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
+tb_manifold tb_collide_circles_unchecked(const tb_circle* a, tb_transform xfa, const tb_circle* b, tb_transform xfb,
+                                         tb_patch* patch) {
   local_manifold m = {0};
   tb_vec2 cb = tb_transform_point(relative_transform(xfa, xfb), b->center);
   point_contact(&m, a->center, cb, a->radius, b->radius, tb_v2(1.0f, 0.0f));
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 /* Circle b against segment p1-p2 (A's frame) inflated by ra. */
@@ -178,20 +217,21 @@ static inline void segment_circle(local_manifold* m, tb_vec2 p1, tb_vec2 p2, flo
   if (!(sep < TB_SPECULATIVE_DISTANCE)) return;
   m->normal = n;
   add_point(m, tb_mul_add(c, ra - s + 0.5f * sep, n), sep, 0u);
+  set_patch(m, n, p1, p2, c, c, b->radius + 0.5f * sep, ra + b->radius); /* the point is c - (rb + sep / 2) n */
 }
 
 tb_manifold tb_collide_capsule_and_circle_unchecked(const tb_capsule* a, tb_transform xfa, const tb_circle* b,
-                                                    tb_transform xfb) {
+                                                    tb_transform xfb, tb_patch* patch) {
   local_manifold m = {0};
   segment_circle(&m, a->center1, a->center2, a->radius, b, xfa, xfb);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 tb_manifold tb_collide_segment_and_circle_unchecked(const tb_segment* a, tb_transform xfa, const tb_circle* b,
-                                                    tb_transform xfb) {
+                                                    tb_transform xfb, tb_patch* patch) {
   local_manifold m = {0};
   segment_circle(&m, a->point1, a->point2, 0.0f, b, xfa, xfb);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 /* The circle's centre c is closest to a face or to a vertex of the core polygon.
@@ -227,13 +267,14 @@ static inline void polygon_circle(local_manifold* m, const tb_polygon* a, tb_vec
   m->normal = n;
   /* core point c - s n; A's surface a->radius further along n */
   add_point(m, tb_mul_add(c, a->radius - s + 0.5f * sep, n), sep, 0u);
+  set_patch(m, n, v1, v2, c, c, rb + 0.5f * sep, r);
 }
 
 tb_manifold tb_collide_polygon_and_circle_unchecked(const tb_polygon* a, tb_transform xfa, const tb_circle* b,
-                                                    tb_transform xfb) {
+                                                    tb_transform xfb, tb_patch* patch) {
   local_manifold m = {0};
   polygon_circle(&m, a, tb_transform_point(relative_transform(xfa, xfb), b->center), b->radius);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 /* ------------------------------------------- polygon-like contacts (SAT) -- */
@@ -434,7 +475,8 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
   float r = fp->ref->radius + fp->inc->radius;
   tb_vec2 n = fp->n;
   float sep = fp->s - r;
-  if (dist > TB_CORE_GAP_TOLERANCE) {
+  bool apart = dist > TB_CORE_GAP_TOLERANCE;
+  if (apart) {
     n = tb_scale(1.0f / dist, d);
     sep = dist - r;
   }
@@ -445,6 +487,16 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
   feature_at(fi, fp->j1, fp->j2, &ii, &it);
   m->normal = fp->flip ? tb_neg(n) : n;
   add_point(m, tb_mul_add(cr, fp->ref->radius + 0.5f * sep, n), sep, pair_id(fp, ri, rt, ii, it));
+  /* two vertices apart: the gap follows their roundings (a vertex against an
+   * edge's interior, in the degenerate cases, keeps its gap, and so do
+   * vertices that touch, whose normal is the face's: no patch) */
+  if (apart && r > 0.0f && rt == TB_FEATURE_VERTEX && it == TB_FEATURE_VERTEX) {
+    float to_ref = fp->ref->radius + 0.5f * sep, to_inc = fp->inc->radius + 0.5f * sep;
+    if (fp->flip)
+      set_point_patch(m, -to_inc, to_ref, r);
+    else
+      set_point_patch(m, -to_ref, to_inc, r);
+  }
 }
 
 /* Contact of two cores, both in A's frame (a's own frame).
@@ -529,6 +581,10 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
    * tolerance of would move the point far along it and drop a deep end-to-end
    * contact in one argument order */
   bool steep = fabsf(u[1] - u[0]) < 0.5f * tb_length(tb_sub(p[1], p[0]));
+  /* the incident feature that touches spans the kept points' vertices (a
+   * cut point's vertex lies beyond the slab, where its edge runs on): u_lo
+   * to u_hi along t, against the reference face's 0 to len */
+  float u_lo = FLT_MAX, u_hi = -FLT_MAX;
   for (int k = 0; k < 2; ++k) {
     tb_vec2 q = p[k];
     uint32_t id;
@@ -557,53 +613,67 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
     if (!(sep < TB_SPECULATIVE_DISTANCE)) continue;
     /* reference surface at q - sq n + rr n, incident surface at q - ri n */
     add_point(m, tb_mul_add(q, 0.5f * (rr - sq - ri), fp.n), sep, id);
+    u_lo = u[k] < u_lo ? u[k] : u_lo;
+    u_hi = u[k] > u_hi ? u[k] : u_hi;
   }
   m->normal = fp.flip ? tb_neg(fp.n) : fp.n;
+  if (m->count == 0) return;
+  /* The incident feature keeps touching while, moved by d along t, it
+   * overlaps [0, len]: -u_hi <= d <= len - u_lo. The manifold's tangent
+   * right_perp(normal) is -t (normal fp.n: A is the reference, and d is B's
+   * slide) or t (normal -fp.n: B is the reference, and B's slide relative to
+   * A is -d): the same range either way, and r1 (u = 0) is where it ends
+   * for d > 0. The incident core lies ri + sep / 2 beyond the points along
+   * fp.n. */
+  float offset = ri + 0.5f * m->sep[0];
+  if (fp.flip) offset = -offset;
+  m->bounded = true;
+  m->patch = (tb_patch){u_lo - len, u_hi, offset, offset, rr + ri, true, r2, r1, fp.n};
 }
 
 /* ------------------------------------------- unchecked pairs of cores -- */
 
-tb_manifold tb_collide_capsules_unchecked(const tb_capsule* a, tb_transform xfa, const tb_capsule* b,
-                                          tb_transform xfb) {
+tb_manifold tb_collide_capsules_unchecked(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb,
+                                          tb_patch* patch) {
   local_manifold m = {0};
   tb_transform rel = relative_transform(xfa, xfb);
   core ca, cb;
   segment_core(&ca, a->center1, a->center2, a->radius);
   segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
   collide_cores(&m, &ca, &cb);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 tb_manifold tb_collide_segment_and_capsule_unchecked(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
-                                                     tb_transform xfb) {
+                                                     tb_transform xfb, tb_patch* patch) {
   local_manifold m = {0};
   tb_transform rel = relative_transform(xfa, xfb);
   core ca, cb;
   segment_core(&ca, a->point1, a->point2, 0.0f);
   segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
   collide_cores(&m, &ca, &cb);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 tb_manifold tb_collide_segment_and_polygon_unchecked(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
-                                                     tb_transform xfb) {
+                                                     tb_transform xfb, tb_patch* patch) {
   local_manifold m = {0};
   core ca, cb;
   segment_core(&ca, a->point1, a->point2, 0.0f);
   polygon_core(&cb, b, relative_transform(xfa, xfb));
   collide_cores(&m, &ca, &cb);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 tb_manifold tb_collide_polygon_and_capsule_unchecked(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
-                                                     tb_transform xfb) {
+                                                     tb_transform xfb, tb_patch* patch) {
   local_manifold m = {0};
   tb_transform rel = relative_transform(xfa, xfb);
   core ca, cb;
   local_polygon_core(&ca, a);
   segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
   collide_cores(&m, &ca, &cb);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, patch);
 }
 
 /* two polygons in A's frame */
@@ -616,10 +686,10 @@ static void polygons_local(local_manifold* m, const tb_polygon* a, tb_transform 
 }
 
 void tb_collide_polygons_into(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb,
-                              tb_manifold* out) {
+                              tb_manifold* out, tb_patch* patch) {
   local_manifold m = {0};
   polygons_local(&m, a, xfa, b, xfb);
-  store_world(&m, xfa, out);
+  store_world(&m, xfa, out, patch);
 }
 
 /* ------------------------------------------------- checked public entries -- */
@@ -632,28 +702,28 @@ tb_manifold tb_collide_circles(const tb_circle* a, tb_transform xfa, const tb_ci
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_circle, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
                           xfb))
     return no_contact;
-  return tb_collide_circles_unchecked(a, xfa, b, xfb);
+  return tb_collide_circles_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_capsule_and_circle(const tb_capsule* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_capsule, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
                           xfb))
     return no_contact;
-  return tb_collide_capsule_and_circle_unchecked(a, xfa, b, xfb);
+  return tb_collide_capsule_and_circle_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_capsules(const tb_capsule* a, tb_transform xfa, const tb_capsule* b, tb_transform xfb) {
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_capsule, a), xfa, b, TB_COLLIDE_WHY(tb_check_capsule, b),
                           xfb))
     return no_contact;
-  return tb_collide_capsules_unchecked(a, xfa, b, xfb);
+  return tb_collide_capsules_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_segment_and_circle(const tb_segment* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_segment, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
                           xfb))
     return no_contact;
-  return tb_collide_segment_and_circle_unchecked(a, xfa, b, xfb);
+  return tb_collide_segment_and_circle_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
@@ -661,7 +731,7 @@ tb_manifold tb_collide_segment_and_capsule(const tb_segment* a, tb_transform xfa
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_segment, a), xfa, b, TB_COLLIDE_WHY(tb_check_capsule, b),
                           xfb))
     return no_contact;
-  return tb_collide_segment_and_capsule_unchecked(a, xfa, b, xfb);
+  return tb_collide_segment_and_capsule_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
@@ -669,14 +739,14 @@ tb_manifold tb_collide_segment_and_polygon(const tb_segment* a, tb_transform xfa
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_segment, a), xfa, b, TB_COLLIDE_WHY(tb_check_polygon, b),
                           xfb))
     return no_contact;
-  return tb_collide_segment_and_polygon_unchecked(a, xfa, b, xfb);
+  return tb_collide_segment_and_polygon_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_polygon_and_circle(const tb_polygon* a, tb_transform xfa, const tb_circle* b, tb_transform xfb) {
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_polygon, a), xfa, b, TB_COLLIDE_WHY(tb_check_circle, b),
                           xfb))
     return no_contact;
-  return tb_collide_polygon_and_circle_unchecked(a, xfa, b, xfb);
+  return tb_collide_polygon_and_circle_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
@@ -684,7 +754,7 @@ tb_manifold tb_collide_polygon_and_capsule(const tb_polygon* a, tb_transform xfa
   if (!tb_collide_args_ok(__func__, a, TB_COLLIDE_WHY(tb_check_polygon, a), xfa, b, TB_COLLIDE_WHY(tb_check_capsule, b),
                           xfb))
     return no_contact;
-  return tb_collide_polygon_and_capsule_unchecked(a, xfa, b, xfb);
+  return tb_collide_polygon_and_capsule_unchecked(a, xfa, b, xfb, NULL);
 }
 
 tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_polygon* b, tb_transform xfb) {
@@ -693,5 +763,5 @@ tb_manifold tb_collide_polygons(const tb_polygon* a, tb_transform xfa, const tb_
     return no_contact;
   local_manifold m = {0};
   polygons_local(&m, a, xfa, b, xfb);
-  return to_world(&m, xfa);
+  return to_world(&m, xfa, NULL);
 }

@@ -59,6 +59,9 @@ typedef struct tb_step_context {
   /* (v.x, v.y, w) per solver body of the deep overlaps' push-out, added to
    * the velocity in the position update; NULL in a step without deep overlap */
   float* push_velocities;
+  /* the position update moved the bodies since the contact solver last
+   * measured how far they slid along their contacts (cleared by that) */
+  bool bodies_moved;
 } tb_step_context;
 
 /* The speed caps (tumble.h, maximum_linear_speed) hold for every moving body

@@ -22,6 +22,9 @@ static tb_world_id pyramid_100(void) { return stress_new_pyramid(0.0f, 0.0f, 100
 static tb_world_id mass_ratio_100(void) { return stress_new_mass_ratio(100.0f); }
 static tb_world_id mass_ratio_400(void) { return stress_new_mass_ratio(400.0f); }
 static tb_world_id mass_ratio_1000(void) { return stress_new_mass_ratio(1000.0f); }
+/* mass_ratio_edge's scenes at its largest ratio, where they fail */
+static tb_world_id heavy_on_light(void) { return stress_new_heavy_on_light(1e6f); }
+static tb_world_id heavy_pendulum(void) { return stress_new_heavy_pendulum(1e6f); }
 static tb_world_id spinner(void) { return stress_new_spinner(NULL, NULL); }
 static tb_world_id pyramid_8km(void) { return stress_new_pyramid(8000.0f, 8000.0f, 20, 0.5f); }
 static tb_world_id pyramid_65km(void) { return stress_new_pyramid(65000.0f, 65000.0f, 20, 0.5f); }
@@ -49,6 +52,8 @@ static const hashed_scene k_scenes[] = {
     {"mass_ratio_400", 1800, mass_ratio_400, NULL},
     {"mass_ratio_1000", 1800, mass_ratio_1000, NULL},
     {"ball_and_chain", 1800, stress_new_ball_and_chain, NULL},
+    {"mass_ratio_edge_stack", 180, heavy_on_light, NULL},
+    {"mass_ratio_edge_pendulum", 180, heavy_pendulum, NULL},
     {"overlap_boxes", 180, stress_new_overlap_boxes, NULL},
     {"overlap_circles", 180, stress_new_overlap_circles, NULL},
     {"bullets", 120, stress_new_bullets, NULL},

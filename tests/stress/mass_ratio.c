@@ -138,3 +138,133 @@ void stress_ball_and_chain(stress_result* out) {
   free(b);
   tb_destroy_world(w);
 }
+
+/* ---- where the mass ratio stops holding ------------------------------------ */
+
+/* A 1 m box of `ratio` kg resting on a 1 m box of 1 kg on the ground y = 0
+ * (created ground, light, heavy). */
+tb_world_id stress_new_heavy_on_light(float ratio) {
+  tb_world_id w = stress_world(false);
+  stress_ground(w, 0.0f, 0.0f, 10.0f);
+  stress_box(w, (tb_vec2){0.0f, 0.5f}, 0.0f, 0.5f, 0.5f, NULL);
+  tb_shape_def heavy = tb_default_shape_def();
+  heavy.density = ratio;
+  stress_box(w, (tb_vec2){0.0f, 1.5f}, 0.0f, 0.5f, 0.5f, &heavy);
+  return w;
+}
+
+/* A pendulum released level: a 1 m link of 1 kg (a 1 x 0.1 m box) pinned at
+ * one end to a static anchor at (0, 10), and a ball of radius 0.25 m and
+ * `ratio` kg pinned at its centre to the link's other end (joined bodies do
+ * not collide). */
+tb_world_id stress_new_heavy_pendulum(float ratio) {
+  tb_world_id w = stress_world(false);
+  tb_body_def sd = tb_default_body_def();
+  sd.position = (tb_vec2){0.0f, 10.0f};
+  tb_body_id anchor = tb_create_body(w, &sd);
+  tb_shape_def link_def = tb_default_shape_def();
+  link_def.density = 10.0f; /* 0.1 m^2: 1 kg */
+  tb_body_id link = stress_box(w, (tb_vec2){0.5f, 10.0f}, 0.0f, 0.5f, 0.05f, &link_def);
+  tb_shape_def ball_def = tb_default_shape_def();
+  ball_def.density = ratio / (3.14159265f * 0.25f * 0.25f);
+  tb_body_id ball = stress_circle(w, (tb_vec2){1.0f, 10.0f}, 0.25f, &ball_def);
+  tb_revolute_joint_def jd = tb_default_revolute_joint_def();
+  jd.body_a = anchor;
+  jd.body_b = link;
+  jd.local_anchor_b = (tb_vec2){-0.5f, 0.0f};
+  tb_create_revolute_joint(w, &jd);
+  jd.body_a = link;
+  jd.body_b = ball;
+  jd.local_anchor_a = (tb_vec2){0.5f, 0.0f};
+  jd.local_anchor_b = (tb_vec2){0.0f, 0.0f};
+  tb_create_revolute_joint(w, &jd);
+  return w;
+}
+
+/* Over 3 s at `substeps`: the deeper of the light box's overlap with the
+ * ground and the heavy box's with the light one (m; 1 m: crushed through),
+ * and the widest gap of the pendulum's two joints (m). */
+static void run_edge(float ratio, int substeps, double* sink, double* gap) {
+  tb_world_id w = stress_new_heavy_on_light(ratio);
+  int n = 0;
+  tb_body_id* b = stress_bodies(w, &n); /* ground, light, heavy */
+  *sink = 0.0;
+  for (int i = 0; i < 180; ++i) {
+    tb_world_step(w, STRESS_DT, substeps);
+    double light = tb_body_get_position(b[1]).y, heavy = tb_body_get_position(b[2]).y;
+    *sink = fmax(*sink, fmax(0.5 - light, light + 1.0 - heavy));
+  }
+  free(b);
+  tb_destroy_world(w);
+  w = stress_new_heavy_pendulum(ratio);
+  b = stress_bodies(w, &n); /* link, ball (the anchor has no shape) */
+  *gap = 0.0;
+  for (int i = 0; i < 180; ++i) {
+    tb_world_step(w, STRESS_DT, substeps);
+    *gap = fmax(*gap, widest_gap(b, n));
+  }
+  free(b);
+  tb_destroy_world(w);
+}
+
+/* The soft contacts' closed form for the heavy-on-light stack: each contact's
+ * two points share the load, a point of effective mass m_n being a spring
+ * m_n omega^2. The light box's points at (+-0.5, -0.5) have m_n = 1 /
+ * (1/m + 0.5^2 / I) = 0.4 kg (m = 1, I = 1/6) against the ground (omega at
+ * static bodies), and 1 / (2.5 + 2.5 / ratio) kg under the heavy box (omega
+ * between dynamic bodies); the ground carries (ratio + 1) g, the light box
+ * ratio g. Both omegas are capped at h omega = 3 (tumble.h): at 4 substeps
+ * both are 720 rad/s, at 8 the dynamic one is 2 pi 120 = 754. */
+static double soft_sink(double ratio, int substeps) {
+  tb_world_def wd = tb_default_world_def();
+  const double two_pi = 6.283185307179586;
+  double most = 3.0 * substeps / STRESS_DT;
+  double dynamic = fmin(two_pi * wd.contact_hertz, most), against_static = fmin(two_pi * 2.0 * wd.contact_hertz, most);
+  double ground = 0.5 * (ratio + 1.0) * STRESS_G / (0.4 * against_static * against_static);
+  double under = 0.5 * ratio * STRESS_G * (2.5 + 2.5 / ratio) / (dynamic * dynamic);
+  return fmax(ground, under);
+}
+
+#define EDGE_RATIOS 6       /* 1e1 .. 1e6 */
+#define EDGE_SUPPORTED 3    /* up to 1e3: the range tumble.h states */
+#define EDGE_GAP_BOUND 0.01 /* m: 1 % of the link */
+static double edge_sink[EDGE_RATIOS][2], edge_gap[EDGE_RATIOS][2];
+
+/* Mass ratios 1e1 to 1e6 at 4 and 8 substeps (3 s each, sleep off). Within
+ * the supported range (to 1e3) the stack may sink at most twice the soft
+ * contacts' closed form (a spring loaded at once overshoots to at most twice
+ * its static deflection) and the joints may open by at most 1 cm; beyond it
+ * the table shows how it fails (the light box crushed through, the joints
+ * opening), with no assertion. */
+void stress_mass_ratio_edge(stress_result* out) {
+  out->pass = true;
+  for (int r = 0; r < EDGE_RATIOS; ++r)
+    for (int s = 0; s < 2; ++s) {
+      double ratio = pow(10.0, r + 1);
+      run_edge((float)ratio, 4 << s, &edge_sink[r][s], &edge_gap[r][s]);
+      if (r < EDGE_SUPPORTED)
+        out->pass &= edge_sink[r][s] <= 2.0 * soft_sink(ratio, 4 << s) && edge_gap[r][s] <= EDGE_GAP_BOUND;
+      out->pass &= isfinite(edge_sink[r][s]) && isfinite(edge_gap[r][s]);
+    }
+  stress_note(out, "4 substeps, sink / joint gap (m):");
+  for (int r = 0; r < EDGE_RATIOS; ++r)
+    stress_note(out, " 1e%d %.2g / %.2g%s", r + 1, edge_sink[r][0], edge_gap[r][0], r + 1 < EDGE_RATIOS ? ";" : "");
+  stress_note(out, " (8 substeps: see the table below)");
+}
+
+void stress_mass_ratio_edge_table(FILE* f) {
+  fprintf(f,
+          "\n## Mass ratio: where it stops holding\n\n"
+          "`mass_ratio_edge`: a 1 m box of the ratio's mass on a 1 m box of 1 kg on the ground, and a pendulum of a "
+          "1 m, 1 kg link and a ball of the ratio's mass, each 3 s at 60 Hz. Sink: the deeper overlap of the stack's "
+          "two contacts (1 m: the heavy box went through the light one); soft closed form: the deflection of the "
+          "contacts' springs under the load (tumble.h, contact_hertz); joint gap: the widest distance between a "
+          "joint's two anchors. tumble.h states the supported range, up to 1e3:1.\n\n"
+          "| mass ratio | sink, 4 substeps | closed form | joint gap, 4 substeps | sink, 8 substeps | closed form | "
+          "joint gap, 8 substeps |\n| --- | --- | --- | --- | --- | --- | --- |\n");
+  for (int r = 0; r < EDGE_RATIOS; ++r) {
+    double ratio = pow(10.0, r + 1);
+    fprintf(f, "| 1e%d | %.3g m | %.3g m | %.3g m | %.3g m | %.3g m | %.3g m |\n", r + 1, edge_sink[r][0],
+            soft_sink(ratio, 4), edge_gap[r][0], edge_sink[r][1], soft_sink(ratio, 8), edge_gap[r][1]);
+  }
+}

@@ -99,6 +99,9 @@ void stress_mass_ratio_100(stress_result* out);
 void stress_mass_ratio_400(stress_result* out);
 void stress_mass_ratio_1000(stress_result* out);
 void stress_ball_and_chain(stress_result* out);
+void stress_mass_ratio_edge(stress_result* out);
+/* The Markdown table of the last stress_mass_ratio_edge run, for the report. */
+void stress_mass_ratio_edge_table(FILE* f);
 
 void stress_overlap_boxes(stress_result* out);
 void stress_overlap_circles(stress_result* out);
@@ -124,6 +127,8 @@ tb_world_id stress_new_card_house(void);
 tb_world_id stress_new_arch(void);
 tb_world_id stress_new_mass_ratio(float ratio);
 tb_world_id stress_new_ball_and_chain(void);
+tb_world_id stress_new_heavy_on_light(float ratio);
+tb_world_id stress_new_heavy_pendulum(float ratio);
 tb_world_id stress_new_overlap_boxes(void);
 tb_world_id stress_new_overlap_circles(void);
 tb_world_id stress_new_bullets(void);
