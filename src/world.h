@@ -56,6 +56,8 @@ typedef struct tb_world {
   int state_capacity;
   void* motions; /* per awake body: gravity, force and damping terms of the step (solver.c) */
   int motion_capacity;
+  int* new_contact_bodies; /* moving bodies with new contacts to sort into their lists (contact.c) */
+  int new_contact_body_count, new_contact_capacity;
   int* step_contacts; /* touching contacts the solver handles this step */
   int step_contact_count, step_contact_capacity;
   void* constraints; /* tb_contact_constraint (contact_solver.c) */
