@@ -240,6 +240,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   free(w->new_contact_bodies);
   free(w->step_contacts);
   free(w->constraints);
+  free(w->color_lanes);
   free(w->wide);
   free(w->deep_contacts);
   free(w->push_velocities);

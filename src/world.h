@@ -62,6 +62,8 @@ typedef struct tb_world {
   int step_contact_count, step_contact_capacity;
   void* constraints; /* tb_contact_constraint (contact_solver.c) */
   int constraint_capacity;
+  int* color_lanes; /* per colour: contacts, then the next lane (contact_solver.c) */
+  int color_capacity;
   void* wide; /* coloured blocks of four contacts */
   int wide_capacity, wide_count;
   void* deep_contacts; /* contacts with a point overlapping deeply this step (contact_solver.c) */
