@@ -57,7 +57,8 @@ typedef struct tb_body {
   int shape_count;
   int contact_list; /* first contact edge key (contact * 2 + side), -1 when none */
   int contact_count;
-  int joint_list; /* first joint edge key (joint * 2 + side), -1 when none */
+  int new_contact_count; /* contacts at the head of the list that tb_contacts_sort_new has yet to sort */
+  int joint_list;        /* first joint edge key (joint * 2 + side), -1 when none */
   int joint_count;
   void* user_data;
 } tb_body;

@@ -251,4 +251,5 @@ void tb_broad_phase_update_pairs(tb_world* w) {
   for (int i = 0; i < bp->move_count; ++i)
     if (bp->move_buffer[i] >= 0) tb_shape_at(w, bp->move_buffer[i])->in_move_buffer = false;
   bp->move_count = 0;
+  tb_contacts_sort_new(w);
 }

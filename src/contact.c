@@ -80,27 +80,127 @@ static uint64_t shape_pair_key(const tb_contact* c) {
  * sorted (shape_pair_key), so that the same scene solves the same way
  * wherever it is, not in the order the broad phase happened to find its
  * pairs (which depends on the rounding of the coordinates). A static body's
- * list, never walked by the solver, takes new contacts at its head. */
+ * list, never walked by the solver, takes new contacts at its head.
+ * A new contact goes to the head of a moving body's list too, and the body
+ * is noted; tb_contacts_sort_new then sorts the new ones and merges them into
+ * the sorted rest. Sorted insertion, one walk down the list per contact, made
+ * a pile-up quadratic: 1,000 bodies created at one point find 499,500 pairs
+ * in one step, each walking a list of up to 999. */
+static int edge_next(const tb_world* w, int key) { return contact_at((tb_world*)w, key >> 1)->edges[key & 1].next; }
+static void set_edge_next(tb_world* w, int key, int next) { contact_at(w, key >> 1)->edges[key & 1].next = next; }
+static uint64_t edge_order(tb_world* w, int key) { return shape_pair_key(contact_at(w, key >> 1)); }
+
 static void link_edge(tb_world* w, int contact, int side) {
   tb_contact* c = contact_at(w, contact);
   tb_body* b = tb_body_at(w, c->edges[side].body);
   int key = contact * 2 + side;
   int prev = -1, next = b->contact_list;
   if (b->type != TB_STATIC_BODY) {
-    uint64_t order = shape_pair_key(c);
-    while (next >= 0 && shape_pair_key(contact_at(w, next >> 1)) < order) {
-      prev = next;
-      next = contact_at(w, next >> 1)->edges[next & 1].next;
+    bool noted = b->new_contact_count > 0 || tb_array_reserve((void**)&w->new_contact_bodies, &w->new_contact_capacity,
+                                                              w->new_contact_body_count + 1, sizeof(int));
+    if (noted) {
+      if (b->new_contact_count == 0) w->new_contact_bodies[w->new_contact_body_count++] = c->edges[side].body;
+      b->new_contact_count += 1;
+    } else { /* out of memory: sorted insertion, as slow as it is correct */
+      uint64_t order = shape_pair_key(c);
+      while (next >= 0 && edge_order(w, next) < order) {
+        prev = next;
+        next = edge_next(w, next);
+      }
     }
   }
   c->edges[side].prev = prev;
   c->edges[side].next = next;
   if (next >= 0) contact_at(w, next >> 1)->edges[next & 1].prev = key;
   if (prev >= 0)
-    contact_at(w, prev >> 1)->edges[prev & 1].next = key;
+    set_edge_next(w, prev, key);
   else
     b->contact_list = key;
   b->contact_count += 1;
+}
+
+/* Merges two sorted lists; returns the head and leaves the tail in *tail. */
+static int merge_edges(tb_world* w, int p, int q, int* tail) {
+  int head = -1, last = -1;
+  while (p >= 0 || q >= 0) {
+    int take;
+    if (q < 0 || (p >= 0 && edge_order(w, p) < edge_order(w, q))) {
+      take = p;
+      p = edge_next(w, p);
+    } else {
+      take = q;
+      q = edge_next(w, q);
+    }
+    if (last >= 0)
+      set_edge_next(w, last, take);
+    else
+      head = take;
+    last = take;
+  }
+  if (last >= 0) set_edge_next(w, last, -1);
+  *tail = last;
+  return head;
+}
+
+/* Sorts the first `count` edges of a list (bottom-up merge sort on the list
+ * itself: O(count log count), no memory) and merges them into the sorted
+ * rest. The keys are unique (one contact per pair of shapes), so the result
+ * is the one sorted insertion gave. */
+static int sort_new_edges(tb_world* w, int list, int count) {
+  if (count <= 0) return list;
+  int rest = list;
+  for (int i = 0; i < count; ++i) rest = edge_next(w, rest);
+  for (int width = 1; width < count; width *= 2) {
+    int p = list, head = -1, tail = -1;
+    for (int done = 0; done < count; done += 2 * width) {
+      /* runs p (width long) and q (up to width long) at position done */
+      int q = p, p_end = -1;
+      for (int i = 0; i < width && done + i < count; ++i) {
+        p_end = q;
+        q = edge_next(w, q);
+      }
+      int q_len = count - done - width < width ? count - done - width : width, q_end = -1, after = q;
+      for (int i = 0; i < q_len; ++i) {
+        q_end = after;
+        after = edge_next(w, after);
+      }
+      set_edge_next(w, p_end, -1);
+      if (q_end >= 0) set_edge_next(w, q_end, -1);
+      int merged_tail;
+      int merged = merge_edges(w, p, q_len > 0 ? q : -1, &merged_tail);
+      if (tail >= 0)
+        set_edge_next(w, tail, merged);
+      else
+        head = merged;
+      tail = merged_tail;
+      p = after;
+    }
+    set_edge_next(w, tail, p); /* p: the rest, past the new edges */
+    list = head;
+  }
+  /* cut the sorted new edges from the rest and merge the two */
+  int last = list;
+  for (int i = 1; i < count; ++i) last = edge_next(w, last);
+  set_edge_next(w, last, -1);
+  int tail;
+  return merge_edges(w, list, rest, &tail);
+}
+
+void tb_contacts_sort_new(tb_world* w) {
+  for (int i = 0; i < w->new_contact_body_count; ++i) {
+    tb_body* b = tb_body_at(w, w->new_contact_bodies[i]);
+    /* at most the whole list: sorting more than the new edges and merging
+     * gives the same sorted list */
+    int count = b->new_contact_count < b->contact_count ? b->new_contact_count : b->contact_count;
+    b->contact_list = sort_new_edges(w, b->contact_list, count);
+    b->new_contact_count = 0;
+    int prev = -1;
+    for (int key = b->contact_list; key >= 0; key = edge_next(w, key)) {
+      contact_at(w, key >> 1)->edges[key & 1].prev = prev;
+      prev = key;
+    }
+  }
+  w->new_contact_body_count = 0;
 }
 
 static void unlink_edge(tb_world* w, int contact, int side) {

@@ -38,8 +38,13 @@ typedef struct tb_contact {
 
 struct tb_world;
 
-/* Creates the contact of two shapes that passed the filters. false when out of memory. */
+/* Creates the contact of two shapes that passed the filters. false when out of
+ * memory. The new contact waits at the head of its moving bodies' lists, out
+ * of order, until tb_contacts_sort_new (the broad phase calls it after each
+ * batch of new pairs). */
 bool tb_contact_create(struct tb_world* w, int shape_a, int shape_b);
+/* Sorts the new contacts into their bodies' lists (see link_edge in contact.c). */
+void tb_contacts_sort_new(struct tb_world* w);
 /* Removes a contact; reports an end event when it was touching (and wants events). */
 void tb_contact_destroy(struct tb_world* w, int contact);
 /* Destroys every contact of a body (all its shapes), or of one shape when shape >= 0. */

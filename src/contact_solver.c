@@ -30,9 +30,8 @@
  * time with GCC vector extensions (SSE on x86-64; plain scalar code
  * elsewhere), straight into the blocks the solve reads. The lanes do the same
  * float operations in the same order as one contact alone, so results are
- * deterministic and independent of the optimiser. Contacts that find no free
- * colour are solved one by one after the coloured ones, each in a block of
- * its own. */
+ * deterministic and independent of the optimiser. A body with more contacts
+ * than one round of colours has (a pile-up) gets more rounds of them. */
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -427,27 +426,51 @@ static void clear_lane(tb_wide_contact* wc, int lane, int static_index) {
 /* Greedy colouring: the first colour that neither dynamic body uses, left in
  * each constraint's lane field. Bodies that never move under impulses
  * (static, kinematic) are shared freely: their velocity is written back
- * unchanged. */
-static void color_constraints(tb_world* w, const tb_step_context* ctx, int* color_count) {
+ * unchanged. A round has TB_COLORS colours; the contacts that find none wait
+ * for the next round, which starts with every colour free again (colours
+ * TB_COLORS r + 0..TB_COLORS-1 in round r). Ordinary scenes take one round.
+ * A pile-up's bodies touch hundreds of others: with one round, the contacts
+ * left over were solved one by one, each alone in a block of four (688 bytes
+ * a contact, 360 of the 527 MB of 1,000 bodies created at one point).
+ * Returns the number of colours. Needs scratch for bodies + 3 x contacts ints. */
+static int color_constraints(tb_world* w, const tb_step_context* ctx) {
+  int bodies = ctx->static_index + 1;
   uint32_t* bits = (uint32_t*)w->scratch;
-  memset(bits, 0, (size_t)(ctx->static_index + 1) * sizeof(uint32_t));
-  memset(color_count, 0, (TB_COLORS + 1) * sizeof(int));
-  tb_contact_constraint* cs = constraints(w);
+  int32_t* waiting = w->scratch + bodies; /* (step contact, body a, body b); -1: a body that does not move */
+  int left = 0;
   for (int k = 0; k < w->step_contact_count; ++k) {
     const tb_contact* c = step_contact(w, k);
     int a = solver_index(ctx, tb_body_at(w, c->edges[0].body));
     int b = solver_index(ctx, tb_body_at(w, c->edges[1].body));
-    bool da = ctx->states[a].inv_mass > 0.0f, db = ctx->states[b].inv_mass > 0.0f;
-    uint32_t used = (da ? bits[a] : 0u) | (db ? bits[b] : 0u);
-    int color = TB_COLORS; /* overflow */
-    if (~used & ((1u << TB_COLORS) - 1u)) {
-      color = __builtin_ctz(~used);
-      if (da) bits[a] |= 1u << color;
-      if (db) bits[b] |= 1u << color;
-    }
-    cs[k].lane = color;
-    color_count[color] += 1;
+    waiting[3 * left] = k;
+    waiting[3 * left + 1] = ctx->states[a].inv_mass > 0.0f ? a : -1;
+    waiting[3 * left + 2] = ctx->states[b].inv_mass > 0.0f ? b : -1;
+    left += 1;
   }
+  tb_contact_constraint* cs = constraints(w);
+  int colors = 0;
+  while (left > 0) {
+    memset(bits, 0, (size_t)bodies * sizeof(uint32_t));
+    int still = 0;
+    for (int i = 0; i < left; ++i) {
+      int k = waiting[3 * i], a = waiting[3 * i + 1], b = waiting[3 * i + 2];
+      uint32_t used = (a >= 0 ? bits[a] : 0u) | (b >= 0 ? bits[b] : 0u);
+      if (!(~used & ((1u << TB_COLORS) - 1u))) { /* no colour left in this round */
+        waiting[3 * still] = k;
+        waiting[3 * still + 1] = a;
+        waiting[3 * still + 2] = b;
+        still += 1;
+        continue;
+      }
+      int color = __builtin_ctz(~used);
+      if (a >= 0) bits[a] |= 1u << color;
+      if (b >= 0) bits[b] |= 1u << color;
+      cs[k].lane = colors + color;
+    }
+    left = still;
+    colors += TB_COLORS;
+  }
+  return colors;
 }
 
 /* The deep contacts of the step, and room for the push velocities when there
@@ -479,24 +502,24 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
 bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int count = w->step_contact_count;
   if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
-      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1, sizeof(int)))
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 3 * count, sizeof(int)))
     return false;
-  int color_count[TB_COLORS + 1];
-  color_constraints(w, ctx, color_count);
+  int colors = color_constraints(w, ctx);
 
-  /* Blocks of four per colour, in constraint order (deterministic), then one
-   * block per contact that found no colour (one live lane each, solved one
-   * after the other). */
-  int next_lane[TB_COLORS + 1];
+  /* Blocks of four per colour, in constraint order (deterministic). */
+  if (!tb_array_reserve((void**)&w->color_lanes, &w->color_capacity, colors, sizeof(int))) return false;
+  int* next_lane = w->color_lanes; /* the contacts of each colour, then the next lane of each */
+  memset(next_lane, 0, (size_t)colors * sizeof(int));
+  tb_contact_constraint* cs = constraints(w);
+  for (int k = 0; k < count; ++k) next_lane[cs[k].lane] += 1;
   int blocks = 0;
-  for (int c = 0; c < TB_COLORS; ++c) {
+  for (int c = 0; c < colors; ++c) {
+    int in_color = next_lane[c];
     next_lane[c] = 4 * blocks;
-    blocks += (color_count[c] + 3) / 4;
+    blocks += (in_color + 3) / 4;
   }
-  next_lane[TB_COLORS] = 4 * blocks;
-  blocks += color_count[TB_COLORS];
   /* the step contact of each lane (-1: unused) in the int scratch, where the
-   * colour bits were */
+   * colouring was */
   if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, sizeof(tb_wide_contact)) ||
       !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, 4 * blocks + 1, sizeof(int)))
     return false;
@@ -504,11 +527,8 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   w->wide_count = blocks;
   int32_t* lane_contact = w->scratch;
   memset(lane_contact, 0xff, (size_t)(4 * blocks) * sizeof *lane_contact);
-  tb_contact_constraint* cs = constraints(w);
   for (int k = 0; k < count; ++k) {
-    int color = cs[k].lane;
-    int lane = next_lane[color];
-    next_lane[color] += color == TB_COLORS ? 4 : 1;
+    int lane = next_lane[cs[k].lane]++;
     cs[k].lane = lane;
     lane_contact[lane] = k;
   }

@@ -268,8 +268,10 @@ tb_result tb_destroy_world(tb_world_id id) {
   free(w->awake);
   free(w->states);
   free(w->motions);
+  free(w->new_contact_bodies);
   free(w->step_contacts);
   free(w->constraints);
+  free(w->color_lanes);
   free(w->wide);
   free(w->deep_contacts);
   free(w->push_velocities);

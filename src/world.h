@@ -60,10 +60,14 @@ typedef struct tb_world {
   int state_capacity;
   void* motions; /* per awake body: gravity, force and damping terms of the step (solver.c) */
   int motion_capacity;
+  int* new_contact_bodies; /* moving bodies with new contacts to sort into their lists (contact.c) */
+  int new_contact_body_count, new_contact_capacity;
   int* step_contacts; /* touching contacts the solver handles this step */
   int step_contact_count, step_contact_capacity;
   void* constraints; /* tb_contact_constraint (contact_solver.c) */
   int constraint_capacity;
+  int* color_lanes; /* per colour: contacts, then the next lane (contact_solver.c) */
+  int color_capacity;
   void* wide; /* coloured blocks of four contacts */
   int wide_capacity, wide_count;
   void* deep_contacts; /* contacts with a point overlapping deeply this step (contact_solver.c) */

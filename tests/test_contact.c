@@ -525,6 +525,55 @@ START_TEST(touching_pairs_match_brute_force) {
 }
 END_TEST
 
+/* A moving body's contacts are listed in the order of their shape pairs
+ * (the solver's order; see link_edge in contact.c), however many arrive in
+ * one step and in whatever order the broad phase finds them. The new ones of
+ * a step are merged into the sorted rest in one go: a pile of 40 circles at
+ * one point gives every body 39 new contacts at once (odd run lengths for
+ * the merge), and a second pile dropped into the first merges new contacts
+ * into lists that already hold some. */
+static int pair_index(const tb_contact_data* c, tb_shape_id own) {
+  tb_shape_id other = c->shape_a.index1 == own.index1 ? c->shape_b : c->shape_a;
+  return (int)other.index1;
+}
+
+static void check_lists_sorted(const tb_body_id* bodies, const tb_shape_id* shapes, int count, int want_at_least) {
+  tb_contact_data data[128];
+  int longest = 0;
+  for (int i = 0; i < count; ++i) {
+    int n = tb_body_get_contact_data(bodies[i], data, 128);
+    ck_assert_int_le(n, 128);
+    for (int k = 1; k < n; ++k)
+      ck_assert_msg(pair_index(&data[k - 1], shapes[i]) < pair_index(&data[k], shapes[i]),
+                    "body %d: contact %d (shape %d) listed before contact %d (shape %d)", i, k - 1,
+                    pair_index(&data[k - 1], shapes[i]), k, pair_index(&data[k], shapes[i]));
+    if (n > longest) longest = n;
+  }
+  ck_assert_int_ge(longest, want_at_least);
+}
+
+START_TEST(contact_lists_stay_sorted_in_a_pile) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_shape_def sd = tb_default_shape_def();
+  enum { N = 40 };
+  tb_body_id bodies[2 * N];
+  tb_shape_id shapes[2 * N];
+  for (int i = 0; i < N; ++i) {
+    bodies[i] = make_body(w, TB_DYNAMIC_BODY, 0.0f, 0.0f);
+    shapes[i] = add_circle(bodies[i], &sd, 0.5f);
+  }
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  check_lists_sorted(bodies, shapes, N, N - 1);
+  for (int i = N; i < 2 * N; ++i) {
+    bodies[i] = make_body(w, TB_DYNAMIC_BODY, 0.1f, 0.0f);
+    shapes[i] = add_circle(bodies[i], &sd, 0.5f);
+  }
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  check_lists_sorted(bodies, shapes, 2 * N, N);
+  tb_destroy_world(w);
+}
+END_TEST
+
 static Suite* contact_suite(void) {
   Suite* s = suite_create("contact");
   TCase* tc = tcase_create("contact");
@@ -541,6 +590,7 @@ static Suite* contact_suite(void) {
   tcase_add_test(tc, mix_results_out_of_range_use_the_default_rule);
   tcase_add_test(tc, gravity_at_its_limit_is_held);
   tcase_add_test(tc, touching_pairs_match_brute_force);
+  tcase_add_test(tc, contact_lists_stay_sorted_in_a_pile);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -30,6 +30,8 @@ static tb_world_id pyramid_8km(void) { return stress_new_pyramid(8000.0f, 8000.0
 static tb_world_id pyramid_65km(void) { return stress_new_pyramid(65000.0f, 65000.0f, 20, 0.5f); }
 static tb_world_id tiny_boxes(void) { return stress_new_pyramid(0.0f, 0.0f, 10, 0.0125f); }
 static tb_world_id large_boxes(void) { return stress_new_pyramid(0.0f, 0.0f, 10, 25.0f); }
+static tb_world_id pileup_300(void) { return stress_new_pileup(300); }
+static tb_world_id pileup_1000(void) { return stress_new_pileup(1000); }
 
 /* Steps: each test's own run (30 s for the structures and mass ratios, 3 s
  * for the overlaps, 2 s for the bullets, 10 s for the spinner and the scale
@@ -37,6 +39,8 @@ static tb_world_id large_boxes(void) { return stress_new_pyramid(0.0f, 0.0f, 10,
  * - pyramid_100 (about 70 ms a step at -O0): its first 5 s, by when its top
  *   has sunk to within 1 % of where it stays (at 2 s it was still bouncing);
  * - one_hour: its first minute, four turns of the drum with its load tumbling;
+ * - pileup_1000: its first 10 steps, the 499,500 pairs and the start of the
+ *   spreading, where its cost is (about 1 s a step at -O0);
  * - churn: its first 5,000 steps, 250 lifetimes of each of the 20 live bodies
  *   (every create and destroy path but the retiring of a slot, which takes
  *   65,535 reuses).
@@ -56,6 +60,8 @@ static const hashed_scene k_scenes[] = {
     {"mass_ratio_edge_pendulum", 180, heavy_pendulum, NULL},
     {"overlap_boxes", 180, stress_new_overlap_boxes, NULL},
     {"overlap_circles", 180, stress_new_overlap_circles, NULL},
+    {"pileup_300", 600, pileup_300, NULL},
+    {"pileup_1000", 10, pileup_1000, NULL},
     {"bullets", 120, stress_new_bullets, NULL},
     {"spinner", 600, spinner, NULL},
     {"scale_offset_8km", 600, pyramid_8km, NULL},

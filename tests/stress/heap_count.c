@@ -24,15 +24,19 @@ typedef union block_header {
 
 static long long g_live_bytes;
 static long long g_alloc_calls;
+static long long g_peak_bytes;
 
 long long stress_heap_live_bytes(void) { return g_live_bytes; }
 long long stress_heap_alloc_calls(void) { return g_alloc_calls; }
+long long stress_heap_peak_bytes(void) { return g_peak_bytes; }
+void stress_heap_reset_peak(void) { g_peak_bytes = g_live_bytes; }
 
 void* __wrap_malloc(size_t size) {
   block_header* h = __real_malloc(sizeof *h + size);
   if (h == NULL) return NULL;
   h->size = size;
   g_live_bytes += (long long)size;
+  if (g_live_bytes > g_peak_bytes) g_peak_bytes = g_live_bytes;
   g_alloc_calls += 1;
   return h + 1;
 }
@@ -48,6 +52,8 @@ void* __wrap_realloc(void* p, size_t size) {
   if (p == NULL) return __wrap_malloc(size);
   block_header* old = (block_header*)p - 1;
   size_t old_size = old->size;
+  /* a moving realloc holds the old block and the new one at once */
+  if (g_live_bytes + (long long)size > g_peak_bytes) g_peak_bytes = g_live_bytes + (long long)size;
   block_header* h = __real_realloc(old, sizeof *h + size);
   if (h == NULL) return NULL;
   h->size = size;

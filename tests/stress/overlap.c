@@ -45,40 +45,6 @@ tb_world_id stress_new_overlap_circles(void) {
   return w;
 }
 
-/* How far the deepest overlap at a touching point goes beyond the depth its
- * contact force F explains. A soft contact holds F at a closing of
- * F (K n) / omega^2 (see structures.c); K's translational part
- * 1/m_a + 1/m_b is all of it for circles (the normal runs through their
- * centres) and a lower bound for boxes, so the excess is exact for the
- * circles and an upper bound for the boxes. In a pile squeezed into its
- * container the force chains press row-mates together like a flat arch, with
- * many times a circle's weight: their resting overlaps are millimetres deep
- * and hold, as the springs' rest state, not an overlap left unresolved. */
-static double deepest_excess_overlap(const tb_body_id* bodies, int count) {
-  double w, ws, deepest = 0.0;
-  stress_contact_omegas(&w, &ws);
-  double substep = (double)STRESS_DT / STRESS_SUBSTEPS;
-  tb_contact_data contacts[64];
-  for (int i = 0; i < count; ++i) {
-    int n = tb_body_get_contact_data(bodies[i], contacts, 64);
-    for (int k = 0; k < n; ++k) {
-      if (!contacts[k].touching) continue;
-      tb_body_id a = tb_shape_get_body(contacts[k].shape_a), b = tb_shape_get_body(contacts[k].shape_b);
-      bool rigid_other = tb_body_get_type(a) != TB_DYNAMIC_BODY || tb_body_get_type(b) != TB_DYNAMIC_BODY;
-      double omega = rigid_other ? ws : w;
-      double inv_mass = 0.0;
-      if (tb_body_get_type(a) == TB_DYNAMIC_BODY) inv_mass += 1.0 / tb_body_get_mass(a);
-      if (tb_body_get_type(b) == TB_DYNAMIC_BODY) inv_mass += 1.0 / tb_body_get_mass(b);
-      for (int j = 0; j < contacts[k].manifold.point_count; ++j) {
-        const tb_manifold_point* p = &contacts[k].manifold.points[j];
-        double explained = p->normal_impulse / substep * inv_mass / (omega * omega);
-        deepest = fmax(deepest, -(double)p->separation - explained);
-      }
-    }
-  }
-  return deepest;
-}
-
 /* Steps the world for 3 s: the peak speed of any body, checked after every
  * step, must stay below the cap plus g d / cap, and at the end no overlap
  * may be more than one linear slop (5 mm) deeper than its contact force
@@ -97,7 +63,7 @@ static void recover(stress_result* out, tb_world_id (*make)(void), double overla
     peak = fmax(peak, stress_peak_speed(b, n));
     if (i == 0) start = stress_deepest_overlap(b, n);
   }
-  double left = stress_deepest_overlap(b, n), excess = deepest_excess_overlap(b, n);
+  double left = stress_deepest_overlap(b, n), excess = stress_deepest_excess_overlap(b, n);
   out->pass = finite && peak <= bound && excess < TB_LINEAR_SLOP;
   stress_note(out,
               "peak speed %.3g m/s (bound %.3g); overlap %.3g m after the first step, %.3g m at 3 s, of which "

@@ -67,6 +67,9 @@ bool stress_all_finite(const tb_body_id* bodies, int count);
 double stress_peak_speed(const tb_body_id* bodies, int count);
 /* The deepest overlap (m, >= 0) over the touching contacts of these bodies. */
 double stress_deepest_overlap(const tb_body_id* bodies, int count);
+/* How far the deepest overlap at a touching point of these bodies goes
+ * beyond the depth its contact force explains (m, >= 0; see stress_util.c). */
+double stress_deepest_excess_overlap(const tb_body_id* bodies, int count);
 /* The contacts' spring rates omega (rad/s) at the default settings and the
  * stress step, as tumble.h documents them: 2 pi contact_hertz, twice that
  * against static bodies, both capped at h omega = 3 per substep. A point of
@@ -82,6 +85,10 @@ double stress_ulp(float x);
  * the number of allocation calls so far. */
 long long stress_heap_live_bytes(void);
 long long stress_heap_alloc_calls(void);
+/* The most heap bytes live at once since the last stress_heap_reset_peak
+ * (a moving realloc counts its old and new block). */
+long long stress_heap_peak_bytes(void);
+void stress_heap_reset_peak(void);
 /* Resident set size of the process (bytes), from /proc/self/statm; -1 if
  * unavailable. */
 long long stress_rss_bytes(void);
@@ -105,6 +112,8 @@ void stress_mass_ratio_edge_table(FILE* f);
 
 void stress_overlap_boxes(stress_result* out);
 void stress_overlap_circles(stress_result* out);
+void stress_pileup_300(stress_result* out);
+void stress_pileup_1000(stress_result* out);
 
 void stress_bullets(stress_result* out);
 void stress_spinner(stress_result* out);
@@ -131,6 +140,8 @@ tb_world_id stress_new_heavy_on_light(float ratio);
 tb_world_id stress_new_heavy_pendulum(float ratio);
 tb_world_id stress_new_overlap_boxes(void);
 tb_world_id stress_new_overlap_circles(void);
+/* `count` bodies created at one point in a U (pileup.c). */
+tb_world_id stress_new_pileup(int count);
 tb_world_id stress_new_bullets(void);
 /* The spinner's two planks are returned through the pointers (either may be
  * NULL). */
