@@ -183,9 +183,19 @@ static bool runs_on(tb_vec2 neighbour, float turn) { return tb_length_sq(neighbo
 
 /* The filter described at the top, in the chain segment's frame. center_b is
  * B's centre (world). A face contact's patch (tb_patch) does not end at a
- * flat or concave joint: what slides past it is on the neighbour's face. */
+ * flat or concave joint: what slides past it is on the neighbour's face.
+ *
+ * *on_face is set where the manifold's normal is not the face's and the end
+ * it lies at is a flat or concave joint: a vertex contact there belongs to
+ * the neighbour's face, but so does not a face of B that rests tilted on
+ * this segment (B's face separates more than the segment's where the segment
+ * is short against B: on a curve of short segments, no segment is flush with
+ * a box, and dropping every tilted face let boxes of a pile sink through a
+ * concave chain). The caller collides B on this face instead (its points
+ * within this segment's extent). */
 static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_vec2 center_b, tb_manifold m,
-                             tb_patch* patch) {
+                             tb_patch* patch, bool* on_face) {
+  *on_face = false;
   tb_vec2 p1 = cs->segment.point1, p2 = cs->segment.point2;
   tb_vec2 e = tb_sub(p2, p1);
   tb_vec2 n = tb_normalize(tb_left_perp(e));
@@ -208,7 +218,10 @@ static tb_manifold one_sided(const tb_chain_segment* cs, tb_transform xfa, tb_ve
   if (tb_length_sq(neighbour) == 0.0f) return m; /* the open end of a chain: a real corner */
   /* convex for a left-facing chain: the path turns clockwise at the joint */
   float turn = at_start ? tb_cross(neighbour, e) : tb_cross(e, neighbour);
-  if (runs_on(neighbour, turn)) return no_contact; /* flat or concave: the neighbour's face owns it */
+  if (runs_on(neighbour, turn)) { /* flat or concave: the neighbour's face, or this one (see on_face) */
+    *on_face = true;
+    return no_contact;
+  }
   tb_vec2 nn = tb_normalize(tb_left_perp(neighbour));
   float other = tb_dot(nm, nn);
   bool mine = at_start ? face > other : face >= other; /* ties go to the earlier segment */
@@ -219,21 +232,33 @@ tb_manifold tb_collide_chain_segment_and_circle_unchecked(const tb_chain_segment
                                                           const tb_circle* b, tb_transform xfb, tb_patch* patch) {
   tb_manifold m = tb_collide_segment_and_circle_unchecked(&a->segment, xfa, b, xfb, patch);
   if (m.point_count == 0) return m;
-  return one_sided(a, xfa, tb_transform_point(xfb, b->center), m, patch);
+  /* a circle off the face's normal touches an end: on_face has no points */
+  bool on_face;
+  return one_sided(a, xfa, tb_transform_point(xfb, b->center), m, patch, &on_face);
 }
 
 tb_manifold tb_collide_chain_segment_and_capsule_unchecked(const tb_chain_segment* a, tb_transform xfa,
                                                            const tb_capsule* b, tb_transform xfb, tb_patch* patch) {
   tb_manifold m = tb_collide_segment_and_capsule_unchecked(&a->segment, xfa, b, xfb, patch);
   if (m.point_count == 0) return m;
-  return one_sided(a, xfa, tb_transform_point(xfb, tb_lerp(b->center1, b->center2, 0.5f)), m, patch);
+  tb_vec2 center = tb_transform_point(xfb, tb_lerp(b->center1, b->center2, 0.5f));
+  bool on_face;
+  m = one_sided(a, xfa, center, m, patch, &on_face);
+  if (!on_face) return m;
+  m = tb_collide_segment_face_and_capsule_unchecked(&a->segment, xfa, b, xfb, patch);
+  return m.point_count == 0 ? m : one_sided(a, xfa, center, m, patch, &on_face);
 }
 
 tb_manifold tb_collide_chain_segment_and_polygon_unchecked(const tb_chain_segment* a, tb_transform xfa,
                                                            const tb_polygon* b, tb_transform xfb, tb_patch* patch) {
   tb_manifold m = tb_collide_segment_and_polygon_unchecked(&a->segment, xfa, b, xfb, patch);
   if (m.point_count == 0) return m;
-  return one_sided(a, xfa, tb_transform_point(xfb, b->centroid), m, patch);
+  tb_vec2 center = tb_transform_point(xfb, b->centroid);
+  bool on_face;
+  m = one_sided(a, xfa, center, m, patch, &on_face);
+  if (!on_face) return m;
+  m = tb_collide_segment_face_and_polygon_unchecked(&a->segment, xfa, b, xfb, patch);
+  return m.point_count == 0 ? m : one_sided(a, xfa, center, m, patch, &on_face);
 }
 
 /* The public forms check their arguments as the other tb_collide_* do (see

@@ -517,6 +517,8 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
  *    two collinear segments end to end, where the segments' face normals are not
  *    enough axes) falls back to step 3's closest points. */
 #define TB_SLAB_TOLERANCE 1e-5f /* m: far above float rounding at game sizes, far below a slop */
+static void clip_to_face(local_manifold* m, face_pair fp);
+
 static void collide_cores(local_manifold* m, const core* a, const core* b) {
   float limit = a->radius + b->radius + TB_SPECULATIVE_DISTANCE;
   int ea, eb;
@@ -533,6 +535,29 @@ static void collide_cores(local_manifold* m, const core* a, const core* b) {
   fp.i2 = next_index(fp.i1, fp.ref->count);
   fp.s = fp.flip ? sb : sa;
   fp.n = core_normal(fp.ref, fp.i1);
+  clip_to_face(m, fp);
+}
+
+/* B's contact on face `edge` of A, that face the reference whichever face of
+ * B separates more: a one-sided chain face whose neighbours do not take B's
+ * tilted face (see chain.c) still holds B up. Steps 2 to 4 above. */
+static void collide_on_face(local_manifold* m, const core* a, int edge, const core* b) {
+  face_pair fp;
+  fp.flip = false;
+  fp.ref = a;
+  fp.inc = b;
+  fp.i1 = edge;
+  fp.i2 = next_index(edge, a->count);
+  fp.n = core_normal(a, edge);
+  tb_vec2 r1 = core_vertex(a, edge);
+  fp.s = FLT_MAX;
+  for (int j = 0; j < b->count; ++j) fp.s = fminf(fp.s, tb_dot(fp.n, tb_sub(core_vertex(b, j), r1)));
+  if (!(fp.s < a->radius + b->radius + TB_SPECULATIVE_DISTANCE)) return;
+  clip_to_face(m, fp);
+}
+
+/* Steps 2 to 4 of collide_cores for the reference face fp names. */
+static void clip_to_face(local_manifold* m, face_pair fp) {
   fp.j1 = 0;
   float most = FLT_MAX;
   for (int j = 0; j < fp.inc->count; ++j) {
@@ -662,6 +687,31 @@ tb_manifold tb_collide_segment_and_polygon_unchecked(const tb_segment* a, tb_tra
   segment_core(&ca, a->point1, a->point2, 0.0f);
   polygon_core(&cb, b, relative_transform(xfa, xfb));
   collide_cores(&m, &ca, &cb);
+  return to_world(&m, xfa, patch);
+}
+
+/* The left face of a segment (normal left_perp(point2 - point1)) is edge 1 of
+ * its core, which runs point2 -> point1. */
+enum { SEGMENT_LEFT_FACE = 1 };
+
+tb_manifold tb_collide_segment_face_and_capsule_unchecked(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
+                                                          tb_transform xfb, tb_patch* patch) {
+  local_manifold m = {0};
+  tb_transform rel = relative_transform(xfa, xfb);
+  core ca, cb;
+  segment_core(&ca, a->point1, a->point2, 0.0f);
+  segment_core(&cb, tb_transform_point(rel, b->center1), tb_transform_point(rel, b->center2), b->radius);
+  collide_on_face(&m, &ca, SEGMENT_LEFT_FACE, &cb);
+  return to_world(&m, xfa, patch);
+}
+
+tb_manifold tb_collide_segment_face_and_polygon_unchecked(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
+                                                          tb_transform xfb, tb_patch* patch) {
+  local_manifold m = {0};
+  core ca, cb;
+  segment_core(&ca, a->point1, a->point2, 0.0f);
+  polygon_core(&cb, b, relative_transform(xfa, xfb));
+  collide_on_face(&m, &ca, SEGMENT_LEFT_FACE, &cb);
   return to_world(&m, xfa, patch);
 }
 

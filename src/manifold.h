@@ -89,6 +89,12 @@ tb_manifold tb_collide_polygon_and_circle_unchecked(const tb_polygon* a, tb_tran
                                                     tb_transform xfb, tb_patch* patch);
 tb_manifold tb_collide_polygon_and_capsule_unchecked(const tb_polygon* a, tb_transform xfa, const tb_capsule* b,
                                                      tb_transform xfb, tb_patch* patch);
+/* B on the left face of segment A (normal left_perp(point2 - point1)), that
+ * face the reference even where a face of B separates more (chain.c). */
+tb_manifold tb_collide_segment_face_and_capsule_unchecked(const tb_segment* a, tb_transform xfa, const tb_capsule* b,
+                                                          tb_transform xfb, tb_patch* patch);
+tb_manifold tb_collide_segment_face_and_polygon_unchecked(const tb_segment* a, tb_transform xfa, const tb_polygon* b,
+                                                          tb_transform xfb, tb_patch* patch);
 /* chain.c */
 tb_manifold tb_collide_chain_segment_and_circle_unchecked(const tb_chain_segment* a, tb_transform xfa,
                                                           const tb_circle* b, tb_transform xfb, tb_patch* patch);
