@@ -46,7 +46,7 @@ static void usage(FILE* to) {
           "  --every K       steps between frames; frame i shows the world after (i + 1) K steps\n"
           "                  (default 90, i.e. 1.5 s, for one frame; 1 for a sequence)\n"
           "  --size WxH      image size in pixels (default 1280x720)\n"
-          "  --scale S       shrink the six performance scenes, 0 < S <= 1 (default 1)\n"
+          "  --scale S       shrink the performance scenes, 0 < S <= 1 (default 1)\n"
           "  --out DIR       output folder (default out), created when missing\n"
           "  --video         also make DIR/NAME.mp4 and DIR/NAME.gif with ffmpeg (needs N >= 2)\n"
           "  --no-overlay    no scene name, simulated time and step time in the corner\n"

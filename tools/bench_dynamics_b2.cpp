@@ -269,9 +269,9 @@ const Scene k_scenes[] = {
     {"large_pyramid", build_large_pyramid, 500, box_of(-105.0f, -5.0f, 105.0f, 105.0f)},
     {"many_pyramids", build_many_pyramids, 200, box_of(-115.0f, -5.0f, 115.0f, 225.0f)},
     {"joint_grid", build_joint_grid, 500, box_of(-160.0f, -160.0f, 160.0f, 10.0f)},
-    {"rain", build_rain, 1000, box_of(-25.0f, -5.0f, 25.0f, 110.0f)},
+    {"rain_2000", build_rain, 1000, box_of(-25.0f, -5.0f, 25.0f, 110.0f)},
     {"smash", build_smash, 300, box_of(-100.0f, -300.0f, 400.0f, 300.0f)},
-    {"tumbler", build_tumbler, 750, box_of(-16.0f, -6.0f, 16.0f, 26.0f)},
+    {"tumbler_kinematic", build_tumbler, 750, box_of(-16.0f, -6.0f, 16.0f, 26.0f)},
 };
 const int SCENE_COUNT = static_cast<int>(sizeof k_scenes / sizeof k_scenes[0]);
 

@@ -8,6 +8,7 @@
 #define TUMBLE_SCENE_BUILD_H
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "tumble.h"

@@ -10,6 +10,7 @@
 
 #include "gallery.h"
 #include "scene_build.h"
+#include "v3_scenes.h"
 
 /* ------------------------------------------------ performance scenes -- */
 
@@ -88,7 +89,7 @@ static void build_joint_grid(tb_world_id world, float scale) {
   free(bodies);
 }
 
-/* rain: 2,000 bodies spawned at once (the world starts with all of them in the
+/* rain_2000: 2,000 bodies spawned at once (the world starts with all of them in the
  * air; they land over the first ~5 s) into a static container: floor top at
  * y = 0, inner walls at x = +-20, walls 50 m high. Bodies sit on a 25-column
  * lattice (cells 1.52 m wide, 1.125 m tall; rows from y = 10 to 100), each
@@ -96,7 +97,7 @@ static void build_joint_grid(tb_world_id world, float scale) {
  * order, five draws of the xorshift32 generator (seed 20240601): kind (< 0.5 a
  * circle, else a box), size s in [0.15, 0.35) (radius or half-extent), angle in
  * [-pi, pi), x and y jitter in [-1, 1) times the cell's free room. */
-static void build_rain(tb_world_id world, float scale) {
+static void build_rain_2000(tb_world_id world, float scale) {
   tb_world_set_gravity(world, (tb_vec2){0.0f, -10.0f});
   tb_body_id g = body_at(world, TB_STATIC_BODY, 0.0f, 0.0f, 0.0f, NULL);
   tb_shape_def gd = tb_default_shape_def();
@@ -161,11 +162,11 @@ static void build_smash(tb_world_id world, float scale) {
   }
 }
 
-/* tumbler: a kinematic hollow box ("container") centred at (0, 10), turning at
+/* tumbler_kinematic: a kinematic hollow box ("container") centred at (0, 10), turning at
  * 25 deg/s: four walls 1 m thick whose centre lines form a 20 m square (inner
  * space 19 m). Inside, a 45 x 45 grid of boxes of 0.25 m (half 0.125, density
  * 1), 0.4 m apart, from (-9, 1). */
-static void build_tumbler(tb_world_id world, float scale) {
+static void build_tumbler_kinematic(tb_world_id world, float scale) {
   tb_world_set_gravity(world, (tb_vec2){0.0f, -10.0f});
   tb_body_def bd = tb_default_body_def();
   bd.type = TB_KINEMATIC_BODY;
@@ -300,19 +301,35 @@ static void build_chain_100(tb_world_id world, float scale) {
   }
 
 static const tb_scene k_scenes[] = {
-    /* the six performance scenes: keep in step with tools/bench_dynamics_b2.cpp */
+    /* the performance scenes: first Box2D v3's benchmark, its ten scenes under
+     * its names, built as v3 builds them (v3_scenes.c for those only it has);
+     * large_pyramid, many_pyramids, joint_grid and smash are also the Box2D
+     * 2.4.1 bench's, with rain_2000 and tumbler_kinematic: keep those six in
+     * step with tools/bench_dynamics_b2.cpp */
+    {"compounds", "3,000 bodies of two triangles each dropped into an 80 m container", build_compounds, 500,
+     BOX(-820.0f, -100.0f, 820.0f, 360.0f), NULL, NULL, NULL},
+    {"joint_grid", "100 x 100 circles in a grid of revolute joints hanging from 7 anchors", build_joint_grid, 500,
+     BOX(-160.0f, -160.0f, 160.0f, 10.0f), NULL, NULL, NULL},
+    {"junkyard", "8,000 pentagons in a 160 m container, stirred by a kinematic pusher", build_junkyard, 800,
+     BOX(-85.0f, -5.0f, 85.0f, 60.0f), update_junkyard, NULL, NULL},
     {"large_pyramid", "5,050 boxes in a pyramid of base 100 on the ground", build_large_pyramid, 500,
      BOX(-105.0f, -5.0f, 105.0f, 105.0f), NULL, NULL, NULL},
     {"many_pyramids", "20 x 20 pyramids of base 10 on 20 shelves (22,000 boxes)", build_many_pyramids, 200,
      BOX(-115.0f, -5.0f, 115.0f, 225.0f), NULL, NULL, NULL},
-    {"joint_grid", "100 x 100 circles in a grid of revolute joints hanging from 7 anchors", build_joint_grid, 500,
-     BOX(-160.0f, -160.0f, 160.0f, 10.0f), NULL, NULL, NULL},
-    {"rain", "2,000 circles and boxes dropped at once from 10 to 100 m into a container", build_rain, 1000,
-     BOX(-25.0f, -5.0f, 25.0f, 110.0f), NULL, NULL, NULL},
+    {"rain", "ragdoll humans rained in columns onto five shelves, the oldest column re-spawned every 8 steps",
+     build_rain, 1000, BOX(-130.0f, -50.0f, 130.0f, 230.0f), update_rain, NULL, NULL},
     {"smash", "an 8 m box at 40 m/s into a sleeping 120 x 80 grid of 0.4 m boxes, no gravity", build_smash, 300,
      BOX(-100.0f, -300.0f, 400.0f, 300.0f), NULL, NULL, NULL},
-    {"tumbler", "2,025 boxes of 0.25 m in a 20 m box turning at 25 deg/s", build_tumbler, 750,
+    {"spinner", "6,076 capsules, circles and boxes stirred by a motored bar inside a 40 m ring", build_spinner, 500,
+     BOX(-45.0f, -13.0f, 45.0f, 77.0f), NULL, NULL, NULL},
+    {"tumbler", "2,025 boxes of 0.25 m in a 20 m box turned at 25 deg/s by a revolute motor", build_tumbler, 750,
      BOX(-16.0f, -6.0f, 16.0f, 26.0f), NULL, NULL, NULL},
+    {"washer", "8,100 small squares in a kinematic drum of radius 18 m with paddles, turning at 25 deg/s", build_washer,
+     500, BOX(-20.0f, -10.0f, 20.0f, 30.0f), NULL, NULL, NULL},
+    {"rain_2000", "2,000 circles and boxes dropped at once from 10 to 100 m into a container", build_rain_2000, 1000,
+     BOX(-25.0f, -5.0f, 25.0f, 110.0f), NULL, NULL, NULL},
+    {"tumbler_kinematic", "2,025 boxes of 0.25 m in a kinematic 20 m box turning at 25 deg/s", build_tumbler_kinematic,
+     750, BOX(-16.0f, -6.0f, 16.0f, 26.0f), NULL, NULL, NULL},
     /* the gallery: structure scenes */
     {"vertical_stack", "15 boxes stacked on the ground", build_vertical_stack, 600, BOX(-20.0f, -2.0f, 20.0f, 20.0f),
      NULL, NULL, NULL},
@@ -354,7 +371,7 @@ static const tb_scene k_scenes[] = {
 };
 
 #define SCENE_COUNT ((int)(sizeof k_scenes / sizeof k_scenes[0]))
-#define PERFORMANCE_COUNT 6
+#define PERFORMANCE_COUNT 12
 
 const tb_scene* tb_scenes(int* count) {
   if (count != NULL) *count = SCENE_COUNT;

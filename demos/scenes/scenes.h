@@ -10,10 +10,11 @@
  * scene->default_steps steps, calling scene->update (when not NULL) before
  * each step: some scenes spawn bodies or lodge bullets there.
  *
- * scale in (0, 1] shrinks the six performance scenes for quick runs: every count
- * along a side (pyramid base, pyramids per row and column, grid sides, tumbler
- * grid) is multiplied by scale, so the body count goes as scale^2 (rain spawns
- * 2,000 scale^2 bodies). The structure scenes (vertical_stack ... chain_100)
+ * scale in (0, 1] shrinks the twelve performance scenes for quick runs: every
+ * count along a side (pyramid base, pyramids per row and column, grid sides,
+ * tumbler grid, rain's rows and columns) is multiplied by scale, so the body
+ * count goes as scale^2 (rain_2000 spawns 2,000 scale^2 bodies, spinner 6,076
+ * scale^2). The structure scenes (vertical_stack ... chain_100)
  * and the gallery scenes are small and ignore scale. A scale outside (0, 1] is
  * taken as 1.
  *
@@ -23,8 +24,12 @@
  * "sensor", "belt_upper", "belt_lower"). Every other body a scene creates has
  * NULL user data. Find bodies with tb_scene_find_body.
  *
- * tools/bench_dynamics_b2.cpp rebuilds the six performance scenes with Box2D
- * 2.4.1 from the same parameters: change both together. */
+ * The performance scenes are Box2D v3's ten benchmark scenes under v3's names,
+ * built as v3 builds them (make bench-v3 times them beside v3), then
+ * rain_2000 and tumbler_kinematic, the earlier forms of rain and tumbler.
+ * tools/bench_dynamics_b2.cpp rebuilds six of them with Box2D 2.4.1
+ * (large_pyramid, many_pyramids, joint_grid, rain_2000, smash,
+ * tumbler_kinematic) from the same parameters: change both together. */
 #ifndef TUMBLE_SCENES_H
 #define TUMBLE_SCENES_H
 
@@ -53,14 +58,15 @@ typedef struct tb_scene {
   void (*configure)(tb_world_def* def);
 } tb_scene;
 
-/* All scenes: the six performance scenes first (large_pyramid, many_pyramids,
- * joint_grid, rain, smash, tumbler), then the gallery: the structure scenes
- * and the demo scenes of gallery.c (every scene that is not a performance
- * scene). */
+/* All scenes: the twelve performance scenes first (v3's ten: compounds,
+ * joint_grid, junkyard, large_pyramid, many_pyramids, rain, smash, spinner,
+ * tumbler, washer; then rain_2000, tumbler_kinematic), then the gallery: the
+ * structure scenes and the demo scenes of gallery.c (every scene that is not
+ * a performance scene). */
 const tb_scene* tb_scenes(int* count);
 /* NULL when there is no scene of that name. */
 const tb_scene* tb_scene_find(const char* name);
-/* Whether the scene is one of the six the benchmark times. */
+/* Whether the scene is one of the twelve performance scenes. */
 int tb_scene_is_performance(const tb_scene* scene);
 
 /* A world for the scene: tb_default_world_def() changed by scene->configure

@@ -95,7 +95,7 @@ START_TEST(unknown_scene_and_performance_set) {
   int count = 0, performance = 0;
   const tb_scene* scenes = tb_scenes(&count);
   for (int i = 0; i < count; ++i) performance += tb_scene_is_performance(&scenes[i]);
-  ck_assert_int_eq(performance, 6);
+  ck_assert_int_eq(performance, 12);
   for (int i = 0; i < count; ++i) {
     for (int j = i + 1; j < count; ++j) ck_assert_str_ne(scenes[i].name, scenes[j].name);
   }
