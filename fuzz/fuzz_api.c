@@ -58,6 +58,10 @@
 #define FUZZ_CHECK_FIELD_STATE 1
 #endif
 
+#ifndef FUZZ_CHECK_USER_DATA_LOCKED /* new: world, shape and joint user data can be set from a callback */
+#define FUZZ_CHECK_USER_DATA_LOCKED 1
+#endif
+
 #define MAX_WORLDS 3          /* live at once in one run */
 #define MAX_WORLD_CREATIONS 6 /* per run: each world slot holds 65,536 worlds in its life */
 #define MAX_BODIES 16
@@ -83,8 +87,9 @@ typedef struct world_model {
   int chain_count;
   float max_speed; /* the world's maximum_linear_speed (no getter) */
   uint32_t rng;    /* the callbacks' choices: the same on every replay */
-  tb_vec2 field;   /* the force field's acceleration */
-  int mix_mode;    /* 0 sane, 1..3: the mix callbacks return bad values */
+  tb_vec2 field;   /* the force field's acceleration, or force when field_is_force */
+  bool field_is_force;
+  int mix_mode; /* 0 sane, 1..3: the mix callbacks return bad values */
   struct model* owner;
 } world_model;
 
@@ -209,7 +214,9 @@ static void attack(world_model* wm, const char* where) {
   bool have = true; /* the target exists: a null handle is refused as stale first */
   tb_result r = TB_ERR_LOCKED;
   const char* what = "";
-  uint32_t op = next_rng(wm) % 24;
+  /* 24..26 (user data) only while their check is on: a refused-or-not call
+   * that changes the hash would fail the hash check below */
+  uint32_t op = next_rng(wm) % (FUZZ_CHECK_USER_DATA_LOCKED ? 27 : 24);
   switch (op) {
     case 0: {
       tb_body_def bd = tb_default_body_def();
@@ -276,7 +283,17 @@ static void attack(world_model* wm, const char* where) {
     case 20: what = "tb_world_set_force_field", r = tb_world_set_force_field(w, NULL, NULL); break;
     case 21: what = "tb_world_enable_sleeping", r = tb_world_enable_sleeping(w, false); break;
     case 22: what = "tb_body_set_awake", have = wm->body_count > 0, r = tb_body_set_awake(body, false); break;
-    default: what = "tb_world_set_maximum_linear_speed", r = tb_world_set_maximum_linear_speed(w, 1.0f); break;
+    case 23: what = "tb_world_set_maximum_linear_speed", r = tb_world_set_maximum_linear_speed(w, 1.0f); break;
+    case 24:
+      what = "tb_world_set_user_data", r = tb_world_set_user_data(w, tb_world_get_user_data(w) ? NULL : wm);
+      break;
+    case 25:
+      what = "tb_shape_set_user_data", have = wm->shape_count > 0;
+      r = tb_shape_set_user_data(shape, tb_shape_get_user_data(shape) ? NULL : wm);
+      break;
+    default:
+      what = "tb_joint_set_user_data", have = wm->joint_count > 0;
+      r = tb_joint_set_user_data(joint, tb_joint_get_user_data(joint) ? NULL : wm);
   }
   if (m->check && have)
     FUZZ_CHECK(r == TB_ERR_LOCKED, "%s from the %s callback: %s (%s)", what, where, tb_result_name(r), tb_last_error());
@@ -298,7 +315,8 @@ static void field_fn(double time, const tb_body_state* st, void* context, tb_vec
                (double)st->linear_velocity.y, (double)st->angular_velocity);
 #endif
   if ((next_rng(wm) & 7) == 0) attack(wm, "force field");
-  *force = (tb_vec2){st->mass * wm->field.x, st->mass * wm->field.y};
+  float scale = wm->field_is_force ? 1.0f : st->mass;
+  *force = (tb_vec2){scale * wm->field.x, scale * wm->field.y};
   *torque = -0.01f * st->angular_velocity;
 }
 
@@ -465,6 +483,7 @@ static tb_result create_world(model* m, world_model* wm, fuzz_input* in, bool pl
     if (callbacks & 1) {
       wd.force_field = field_fn, wd.force_field_context = wm;
       wm->field = (tb_vec2){fuzz_value(in, -20, 20), fuzz_value(in, -20, 20)};
+      wm->field_is_force = set & 64;
     }
     if (callbacks & 2) wd.custom_filter = filter_fn, wd.custom_filter_context = wm;
     if (callbacks & 4) wd.pre_solve = pre_solve_fn, wd.pre_solve_context = wm;
@@ -1094,6 +1113,15 @@ static void check_step(const world_model* wm, float dt, tb_result r) {
     FUZZ_CHECK(fuzz_vec_finite(p) && fuzz_vec_finite(v) && isfinite(w) && isfinite(tb_body_get_angle(b)),
                "body %d state not finite", i);
     (void)dt;
+#if FUZZ_CHECK_MIX_RESULTS
+    tb_contact_data cd[8];
+    int nc = tb_body_get_contact_data(b, cd, 8);
+    for (int k = 0; k < nc; ++k)
+      FUZZ_CHECK(
+          isfinite(cd[k].friction) && cd[k].friction >= 0 && isfinite(cd[k].restitution) && cd[k].restitution >= 0,
+          "a contact of body %d: friction %g, restitution %g (mix callbacks)", i, (double)cd[k].friction,
+          (double)cd[k].restitution);
+#endif
 #if FUZZ_CHECK_ENGINE_LIMITS
     FUZZ_CHECK(fabsf(p.x) <= TB_MAX_LENGTH && fabsf(p.y) <= TB_MAX_LENGTH, "body %d at (%g, %g): beyond TB_MAX_LENGTH",
                i, (double)p.x, (double)p.y);
@@ -1336,6 +1364,11 @@ static uint64_t run(const uint8_t* data, size_t size, bool check, int dummies) {
     size_t at = in.at;
     tb_result r = command(&m, &in, &stepped, &dt);
     if (in.at == at) break; /* nothing read: the input has ended */
+#ifdef FUZZ_TRACE           /* -DFUZZ_TRACE: what each command of a reproducer did */
+    if (check)
+      fprintf(stderr, "command %d (op %u, bytes %zu..%zu): %s %s\n", commands, data[at] % 24u, at, in.at,
+              tb_result_name(r), r != TB_OK ? tb_last_error() : "");
+#endif
     hash_all(&m, after);
     trace = mix_trace(trace, (uint64_t)r);
     for (int i = 0; i < MAX_WORLDS; ++i) trace = mix_trace(trace, after[i]);
