@@ -467,28 +467,31 @@ static int color_rounds(tb_world* w, int bodies, uint32_t* bits, int32_t* waitin
  * tb_contact_solver_solve). Returns the number of colours. Needs scratch for
  * bodies + 3 x contacts ints. */
 static int color_constraints(tb_world* w, const tb_step_context* ctx, int* fixed_from) {
-  int bodies = ctx->static_index + 1;
+  int bodies = ctx->static_index + 1, count = w->step_contact_count;
   uint32_t* bits = (uint32_t*)w->scratch;
+  /* (step contact, body a, body b), -1 for a body that does not move: the
+   * pairs from the front, the others from the back */
   int32_t* waiting = w->scratch + bodies;
-  int colors = 0;
-  for (int fixed = 0; fixed < 2; ++fixed) {
-    if (fixed) *fixed_from = colors;
-    int left = 0;
-    for (int k = 0; k < w->step_contact_count; ++k) {
-      const tb_contact* c = step_contact(w, k);
-      int a = solver_index(ctx, tb_body_at(w, c->edges[0].body));
-      int b = solver_index(ctx, tb_body_at(w, c->edges[1].body));
-      a = ctx->states[a].inv_mass > 0.0f ? a : -1;
-      b = ctx->states[b].inv_mass > 0.0f ? b : -1;
-      if ((a < 0 || b < 0) != (fixed == 1)) continue;
-      waiting[3 * left] = k;
-      waiting[3 * left + 1] = a;
-      waiting[3 * left + 2] = b;
-      left += 1;
-    }
-    colors = color_rounds(w, bodies, bits, waiting, left, colors);
+  int pairs = 0, end = count;
+  for (int k = 0; k < count; ++k) {
+    const tb_contact* c = step_contact(w, k);
+    int a = solver_index(ctx, tb_body_at(w, c->edges[0].body));
+    int b = solver_index(ctx, tb_body_at(w, c->edges[1].body));
+    a = ctx->states[a].inv_mass > 0.0f ? a : -1;
+    b = ctx->states[b].inv_mass > 0.0f ? b : -1;
+    int32_t* e = a < 0 || b < 0 ? &waiting[3 * --end] : &waiting[3 * pairs++];
+    e[0] = k;
+    e[1] = a;
+    e[2] = b;
   }
-  return colors;
+  for (int i = end, j = count - 1; i < j; ++i, --j) /* the others back in step order */
+    for (int f = 0; f < 3; ++f) {
+      int32_t t = waiting[3 * i + f];
+      waiting[3 * i + f] = waiting[3 * j + f];
+      waiting[3 * j + f] = t;
+    }
+  *fixed_from = color_rounds(w, bodies, bits, waiting, pairs, 0);
+  return color_rounds(w, bodies, bits, waiting + 3 * end, count - end, *fixed_from);
 }
 
 /* Whether a lane has a point deeper than its push depth (less half
@@ -975,9 +978,9 @@ void tb_contact_solver_reset(tb_world* w) {
   }
 }
 
-/* The i-th block a pass solves: the blocks of contacts between two moving
- * bodies, then those with a body that does not move, each group in the
- * pass's direction. Within one Gauss-Seidel pass the contact solved last
+/* A pass solves the blocks of contacts between two moving bodies, then
+ * those with a body that does not move (from wide_fixed_from on), each group
+ * in the pass's direction. Within one Gauss-Seidel pass the contact solved last
  * has the last word on a body's speed. Solved before a contact that loads
  * the body, a contact with the static world was undone by it: a heavy box
  * (0.25 kg) knocked down at 1.2 m/s onto a light one (0.01 kg) on a 1 cm
@@ -988,11 +991,6 @@ void tb_contact_solver_reset(tb_world* w) {
  * floor's contact stops the light box, and what the heavy one still closes
  * goes into the contact between the two boxes, which can push both apart
  * again; the static world cannot move out of the way. */
-static inline int sweep_block(int i, int fixed_from, int n, bool backward) {
-  if (!backward) return i;
-  return i < fixed_from ? fixed_from - 1 - i : n - 1 - (i - fixed_from);
-}
-
 float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, bool backward) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   tb_f4 change = splat(0.0f);
@@ -1004,18 +1002,19 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
   bool measure = !use_bias && ctx->bodies_moved;
   if (measure) ctx->bodies_moved = false;
   /* one loop per pass kind, each with solve_wide specialised for it */
-  if (use_bias)
-    for (int i = 0; i < n; ++i)
-      solve_wide(&wide[sweep_block(i, fixed_from, n, backward)], ctx->states, ctx->inv_h,
-                 ctx->contact_push_max_velocity, true, false, &change);
-  else if (measure)
-    for (int i = 0; i < n; ++i)
-      solve_wide(&wide[sweep_block(i, fixed_from, n, backward)], ctx->states, ctx->inv_h,
-                 ctx->contact_push_max_velocity, false, true, &change);
-  else
-    for (int i = 0; i < n; ++i)
-      solve_wide(&wide[sweep_block(i, fixed_from, n, backward)], ctx->states, ctx->inv_h,
-                 ctx->contact_push_max_velocity, false, false, &change);
+  for (int group = 0; group < 2; ++group) {
+    int lo = group == 0 ? 0 : fixed_from, hi = group == 0 ? fixed_from : n;
+    int first = backward ? hi - 1 : lo, step = backward ? -1 : 1;
+    if (use_bias)
+      for (int i = lo, b = first; i < hi; ++i, b += step)
+        solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true, false, &change);
+    else if (measure)
+      for (int i = lo, b = first; i < hi; ++i, b += step)
+        solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, true, &change);
+    else
+      for (int i = lo, b = first; i < hi; ++i, b += step)
+        solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, false, &change);
+  }
   return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }
 
