@@ -70,6 +70,7 @@ typedef struct tb_world {
   int color_capacity;
   void* wide; /* coloured blocks of four contacts */
   int wide_capacity, wide_count;
+  int wide_fixed_from; /* the first block of contacts with a body that does not move (contact_solver.c) */
   void* deep_contacts; /* contacts with a point overlapping deeply this step (contact_solver.c) */
   int deep_capacity, deep_count;
   float* push_velocities; /* per solver body: the push-out's (v.x, v.y, w), momentum-free */

@@ -760,6 +760,69 @@ START_TEST(overlapping_column_separates_without_launch) {
 }
 END_TEST
 
+/* A light box under heavy ones does not go through a thin floor. A 0.1 m box
+ * (0.01 kg) on a static floor 1 cm thick carries a 0.5 m box (0.25 kg); a
+ * second one lands on top from 0.3 m (2.4 m/s). One substep at 60 Hz: the
+ * floor's contact is a spring m omega^2 of the light box's mass, omega capped
+ * at 3 / h, so at rest the box sinks W h^2 / (9 m) under the weight W = 5.1 N
+ * on the floor: 1.57 cm, its centre at 0.0343 m (within 1 mm: the relax
+ * passes leave it there to float rounding). Below y = -0.005 its bottom
+ * would be nearer the floor's far side than its top, the floor's normal
+ * would flip and push it out below. When the floor's contact was solved
+ * before the one that loads the box, the heavy box gave the light one its
+ * own speed after the floor had stopped it, and the position update carried
+ * it through (to -37 m). */
+START_TEST(light_box_under_heavy_ones_stays_above_a_thin_floor) {
+  tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, true);
+  tb_shape_def sd = material(1.0f, 0.6f, 0.0f);
+  box_body(w, TB_STATIC_BODY, (tb_vec2){0.0f, -0.005f}, 0.0f, 5.0f, 0.005f, &sd);
+  tb_body_id light = box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 0.05f}, 0.0f, 0.05f, 0.05f, &sd);
+  box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 0.35f}, 0.0f, 0.25f, 0.25f, &sd);
+  box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 1.15f}, 0.0f, 0.25f, 0.25f, &sd);
+  double lowest = 1.0;
+  for (int i = 0; i < 180; ++i) {
+    ck_assert_int_eq(tb_world_step(w, DT, 1), TB_OK);
+    lowest = fmin(lowest, tb_body_get_position(light).y);
+  }
+  double h = DT, weight = (2.0 * 0.25 + 0.01) * G, rest = 0.05 - weight * h * h / (9.0 * 0.01);
+  double end = tb_body_get_position(light).y;
+  fprintf(stderr, "light box under two heavy ones on a 1 cm floor: lowest %.4f m, end %.4f m (spring rest %.4f)\n",
+          lowest, end, rest);
+  ck_assert_msg(lowest > -0.005, "the light box went through the floor (%g m)", lowest);
+  ck_assert_msg(fabs(end - rest) < 1e-3, "the light box rests at %g m, not %g m", end, rest);
+  tb_destroy_world(w);
+}
+END_TEST
+
+/* A pile-up does not push bodies through the floor. 100 bodies (0.5 m boxes
+ * and circles of radius 0.25 m) created at one point, 0.5 m above a static
+ * floor 10 cm thick: the push-out spreads the pile, and the bodies it moves
+ * must not be driven into the floor. A body resting on it has its centre at
+ * 0.25 m less a resting overlap of millimetres; the bound allows half the
+ * floor's thickness (5 cm) below that. With only the deep contacts in the
+ * push-out, the pile's own pushes drove its lowest body 21 cm down, through
+ * the floor (its centre at 0.035 m; with 200 bodies they fell out below). */
+START_TEST(pile_up_stays_above_a_thin_floor) {
+  tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, true);
+  tb_body_id floor = make_body(w, TB_STATIC_BODY, (tb_vec2){0.0f, -0.05f}, 0.0f);
+  tb_shape_def sd = material(1.0f, 0.6f, 0.0f);
+  add_box(floor, &sd, 20.0f, 0.05f);
+  enum { N = 100 };
+  tb_body_id bodies[N];
+  for (int i = 0; i < N; ++i)
+    bodies[i] = i % 2 == 0 ? box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 0.5f}, 0.0f, 0.25f, 0.25f, &sd)
+                           : circle_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 0.5f}, 0.25f, &sd);
+  double lowest = 1.0;
+  for (int i = 0; i < 120; ++i) {
+    step(w, 1);
+    for (int k = 0; k < N; ++k) lowest = fmin(lowest, tb_body_get_position(bodies[k]).y);
+  }
+  fprintf(stderr, "pile-up of %d on a 10 cm floor: lowest centre %.4f m in 2 s (resting 0.25)\n", N, lowest);
+  ck_assert_msg(lowest > 0.25 - 0.05, "a body sank to %g m", lowest);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* Newton's cradle: 5 discs (radius 0.25, 1 kg/m^2, frictionless, e = 1) hang on
  * rigid 2 m distance joints from a static bar. The first is pulled out to
  * 30 deg and released: it arrives at v = sqrt(2 g L (1 - cos 30 deg)) = 2.31
@@ -1432,6 +1495,8 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, relax_iterations_hold_a_column);
   tcase_add_test(tc, mass_ratio_400_to_1);
   tcase_add_test(tc, overlapping_column_separates_without_launch);
+  tcase_add_test(tc, light_box_under_heavy_ones_stays_above_a_thin_floor);
+  tcase_add_test(tc, pile_up_stays_above_a_thin_floor);
   tcase_add_test(tc, extreme_contact_tuning_stays_finite);
   tcase_add_test(tc, more_contacts_than_colours);
   tcase_add_test(tc, simultaneous_elastic_strike);
