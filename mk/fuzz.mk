@@ -20,21 +20,18 @@ FUZZ_DIR := build/fuzz
 FUZZ_CFLAGS := -std=c17 $(WARN) -ffp-contract=off -O1 -g -Iinclude -Ifuzz \
   -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_BIN := $(FUZZ_NAMES:%=$(FUZZ_DIR)/fuzz_%)
-# Invariants of fuzz_api.c that fail on defects of issue 23 whose fixes live on
-# other branches: each is on in the source and off here until its fix is
-# merged (then drop it from this list). Reproducers: fuzz/known_bugs/.
-#   FUZZ_CHECK_SPEED_CAP      items 3, 5: free bodies ignore the speed caps
-#   FUZZ_CHECK_TINY_STEP      item 6: 1e-45 s steps accepted, then TB_ERR_NUMERIC
-#   FUZZ_CHECK_ENGINE_LIMITS  item 7: states beyond TB_MAX_LENGTH / TB_MAX_VALUE
-#   FUZZ_CHECK_REFUSED_CHAIN  item 4: a refused tb_create_chain changes the hash
-#   FUZZ_CHECK_DRAW_VALUES    item 9: unchecked draw bounds and colours
-#   FUZZ_CHECK_MIX_RESULTS    item 9: unchecked mix callback results
-#   FUZZ_CHECK_FIELD_STATE    item 8: the force field sees non-finite states
-#   FUZZ_CHECK_USER_DATA_LOCKED  new (not in issue 23): world, shape and joint
-#                             user data can be set from inside a callback
-FUZZ_KNOWN_BUGS ?= -DFUZZ_CHECK_SPEED_CAP=0 -DFUZZ_CHECK_TINY_STEP=0 -DFUZZ_CHECK_ENGINE_LIMITS=0 \
-  -DFUZZ_CHECK_REFUSED_CHAIN=0 -DFUZZ_CHECK_DRAW_VALUES=0 -DFUZZ_CHECK_MIX_RESULTS=0 -DFUZZ_CHECK_FIELD_STATE=0 \
-  -DFUZZ_CHECK_USER_DATA_LOCKED=0
+# Invariants of fuzz_api.c can be switched off here (-DFUZZ_CHECK_<NAME>=0)
+# while a defect they catch is being fixed; none is off now. The switches:
+#   FUZZ_CHECK_SPEED_CAP         speed caps on every path (issue 23 items 3, 5)
+#   FUZZ_CHECK_TINY_STEP         steps whose reciprocals overflow refused (item 6)
+#   FUZZ_CHECK_ENGINE_LIMITS     states within TB_MAX_LENGTH / TB_MAX_VALUE (item 7)
+#   FUZZ_CHECK_REFUSED_CHAIN     a refused tb_create_chain leaves the hash (item 4)
+#   FUZZ_CHECK_DRAW_VALUES       draw bounds and colours checked (item 9)
+#   FUZZ_CHECK_MIX_RESULTS       mix callback results checked (item 9)
+#   FUZZ_CHECK_FIELD_STATE       the force field sees finite states only (item 8)
+#   FUZZ_CHECK_USER_DATA_LOCKED  user data setters refused inside callbacks
+# Reproducers of each, from before its fix: fuzz/known_bugs/.
+FUZZ_KNOWN_BUGS ?=
 FORMATTED += fuzz/*.c fuzz/*.h
 
 $(FUZZ_DIR)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(LIB_SRC) $(wildcard src/*.h) include/tumble.h

@@ -499,7 +499,7 @@ void* tb_body_get_user_data(tb_body_id id) {
 }
 
 tb_result tb_body_set_user_data(tb_body_id id, void* user_data) {
-  GET_BODY(id, tb_last_result());
+  GET_BODY_FOR_CHANGE(id);
   b->user_data = user_data;
   return TB_OK;
 }

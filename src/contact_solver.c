@@ -557,7 +557,8 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int colors = color_constraints(w, ctx, &fixed_from);
 
   /* Blocks of four per colour, in constraint order (deterministic). */
-  if (!tb_array_reserve((void**)&w->color_lanes, &w->color_capacity, colors, sizeof(int))) return false;
+  /* at least one: with no contacts there are no colours, and memset must not get a NULL */
+  if (!tb_array_reserve((void**)&w->color_lanes, &w->color_capacity, colors + 1, sizeof(int))) return false;
   int* next_lane = w->color_lanes; /* the contacts of each colour, then the next lane of each */
   memset(next_lane, 0, (size_t)colors * sizeof(int));
   tb_contact_constraint* cs = constraints(w);

@@ -699,6 +699,11 @@ void tb_joint_store(tb_world* w, int index, const tb_step_context* ctx) {
       torque = j->angular_impulse;
       break;
   }
+  /* A body whose step was contained (a non-finite state, TB_ERR_NUMERIC)
+   * leaves its solver state non-finite: its joints report no force for the
+   * step rather than NaN (their impulses were reset above if they blew up). */
+  if (!(tb_vec_finite(force) && isfinite(torque) && isfinite(motor)))
+    force = (tb_vec2){0.0f, 0.0f}, torque = motor = 0.0f;
   j->force = tb_saturate2((double)inv_h * force.x, (double)inv_h * force.y);
   j->torque = tb_saturate((double)inv_h * torque);
   j->motor_output = tb_saturate((double)inv_h * motor);
@@ -1248,7 +1253,7 @@ void* tb_joint_get_user_data(tb_joint_id id) {
 }
 
 tb_result tb_joint_set_user_data(tb_joint_id id, void* user_data) {
-  GET_JOINT(id, tb_last_result());
+  GET_JOINT_FOR_CHANGE(id);
   j->user_data = user_data;
   return TB_OK;
 }

@@ -291,7 +291,7 @@ void* tb_shape_get_user_data(tb_shape_id id) {
 }
 
 tb_result tb_shape_set_user_data(tb_shape_id id, void* user_data) {
-  GET_SHAPE(id, tb_last_result());
+  GET_SHAPE_FOR_CHANGE(id);
   s->user_data = user_data;
   return TB_OK;
 }

@@ -499,7 +499,7 @@ void* tb_world_get_user_data(tb_world_id id) {
 }
 
 tb_result tb_world_set_user_data(tb_world_id id, void* user_data) {
-  tb_world* w = tb_world_get(id, "tb_world_set_user_data");
+  tb_world* w = tb_world_get_unlocked(id, "tb_world_set_user_data");
   if (w == NULL) return tb_last_result();
   w->user_data = user_data;
   return TB_OK;

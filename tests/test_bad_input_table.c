@@ -1340,6 +1340,7 @@ typedef struct reentry {
   int calls;
   tb_result destroy_body, destroy_shape, create_body, destroy_joint, step, set_velocity, destroy_world;
   tb_result create_shape, destroy_chain, create_joint;
+  tb_result user_data[4]; /* world, body, shape, joint: a change like any other */
 } reentry;
 
 static void try_everything(reentry* r) {
@@ -1360,6 +1361,11 @@ static void try_everything(reentry* r) {
   r->step = tb_world_step(W, 1.0f / 60.0f, 1);
   r->set_velocity = tb_body_set_linear_velocity(A, (tb_vec2){1, 1});
   r->destroy_world = tb_destroy_world(W);
+  static int marker;
+  r->user_data[0] = tb_world_set_user_data(W, &marker);
+  r->user_data[1] = tb_body_set_user_data(A, &marker);
+  r->user_data[2] = tb_shape_set_user_data(BOX, &marker);
+  r->user_data[3] = tb_joint_set_user_data(JD, &marker);
 }
 
 #define assert_all_locked(r) assert_all_locked_at((r), __LINE__)
@@ -1375,6 +1381,7 @@ static void assert_all_locked_at(const reentry* r, int line) {
   ck_assert_int_eq(r->step, TB_ERR_LOCKED);
   ck_assert_int_eq(r->set_velocity, TB_ERR_LOCKED);
   ck_assert_int_eq(r->destroy_world, TB_ERR_LOCKED);
+  for (int k = 0; k < 4; ++k) ck_assert_msg(r->user_data[k] == TB_ERR_LOCKED, "line %d: user data setter %d", line, k);
   ck_assert(tb_world_is_valid(W) && tb_body_is_valid(B) && tb_shape_is_valid(BOX) && tb_joint_is_valid(JD) &&
             tb_chain_is_valid(CHAIN));
 }
