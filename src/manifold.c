@@ -426,14 +426,16 @@ static void closest_fractions(tb_vec2 p1, tb_vec2 q1, tb_vec2 p2, tb_vec2 q2, fl
   float a = tb_dot(d1, d1), e = tb_dot(d2, d2), b = tb_dot(d1, d2);
   float c = tb_dot(d1, r), f = tb_dot(d2, r);
   float den = a * e - b * b; /* a e sin^2(angle) >= 0 */
+  /* an edge whose squared length underflows (a core 1e-30 thick) is a point:
+   * its fraction is 0, not 0 / 0 */
   float s = den > 1e-6f * a * e ? clamp01((b * f - c * e) / den) : 0.0f;
-  float t = (b * s + f) / e;
+  float t = e > 0.0f ? (b * s + f) / e : 0.0f;
   if (t < 0.0f) {
     t = 0.0f;
-    s = clamp01(-c / a);
+    s = a > 0.0f ? clamp01(-c / a) : 0.0f;
   } else if (t > 1.0f) {
     t = 1.0f;
-    s = clamp01((b - c) / a);
+    s = a > 0.0f ? clamp01((b - c) / a) : 0.0f;
   }
   *s_out = s;
   *t_out = t;

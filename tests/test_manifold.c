@@ -754,6 +754,26 @@ START_TEST(far_from_origin) {
 }
 END_TEST
 
+/* A legal extreme the API fuzzer found: a rounded box whose core is 1e-30 m
+ * thick (radius 2 km) deep in a segment. The core's short edges have a
+ * squared length that underflows to 0, and the closest points of an edge
+ * and a point divided 0 by 0: the manifold point was NaN (and reached the
+ * game's draw callback). An edge that short is a point. */
+START_TEST(core_thinner_than_float_squares) {
+  tb_polygon box;
+  ck_assert_int_eq(tb_make_rounded_box(0x1.d3a5d4p-2f, 0x1.4484cp-100f, 2000.0f, &box), TB_OK);
+  tb_segment seg = {{-0x1.4p+4f, -0x1.38a938p-2f}, {-0x1.659676p+3f, 0x1.4484cp-100f}};
+  tb_transform xfa = {{-20.0f, -5.0f}, {1.0f, 0x1p-14f}};
+  tb_transform xfb = {{0x1.3053a8p-3f, 0x1.eb4542p+2f}, {0x1.f37192p-1f, 0x1.c2c728p-3f}};
+  tb_manifold m = tb_collide_segment_and_polygon(&seg, xfa, &box, xfb);
+  ck_assert_int_ge(m.point_count, 1);
+  ck_assert(isfinite(m.normal.x) && isfinite(m.normal.y));
+  for (int k = 0; k < m.point_count; ++k)
+    ck_assert_msg(isfinite(m.points[k].point.x) && isfinite(m.points[k].point.y) && isfinite(m.points[k].separation),
+                  "point %d not finite", k);
+}
+END_TEST
+
 START_TEST(bad_arguments_give_empty_manifolds) {
   tb_circle c = {{0.0f, 0.0f}, 1.0f};
   tb_polygon box = make_box(1.0f, 1.0f, 0.0f);
@@ -788,6 +808,7 @@ static Suite* manifold_suite(void) {
   tcase_add_test(tc, segment_and_capsule_closed_form);
   tcase_add_test(tc, feature_ids_stay_while_features_touch);
   tcase_add_test(tc, bad_arguments_give_empty_manifolds);
+  tcase_add_test(tc, core_thinner_than_float_squares);
   suite_add_tcase(s, tc);
   TCase* tr = tcase_create("random");
   tcase_set_timeout(tr, 60);
