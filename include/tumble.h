@@ -285,8 +285,9 @@ tb_world_def tb_default_world_def(void);
 /* Create a world; returns the null handle on error (see tb_last_error()).
  * At most 128 worlds exist at once. Each of the 128 world slots holds 65,536
  * worlds in turn and is then retired (TB_ERR_CAPACITY once all are), so a world
- * handle never matches a later world; a slot keeps 2 bytes per body, shape,
- * chain and joint slot its worlds ever used, so that the next world there never
+ * handle never matches a later world; sooner when its worlds have reused one
+ * object slot 32,768 times. A slot keeps 2 bytes per body, shape, chain and
+ * joint slot its worlds ever used, so that the next world there never
  * reissues an old object handle. */
 tb_world_id tb_create_world(const tb_world_def* def);
 tb_result tb_destroy_world(tb_world_id world);

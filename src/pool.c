@@ -100,6 +100,11 @@ bool tb_pool_end_life(tb_pool* pool, tb_pool_history* history) {
     else if (pool->next_free[i] == -2 && g < UINT16_MAX)
       g += 1;
     h.generations[i] = g;
+    if (g >= TB_POOL_WORN) ok = false;
+  }
+  if (!ok) {
+    free(h.generations);
+    h = (tb_pool_history){NULL, 0};
   }
   *history = h;
   tb_pool_free(pool);

@@ -33,8 +33,13 @@ void tb_pool_free(tb_pool* pool);
 /* Starts an empty pool from the history an earlier world left (moved in). */
 void tb_pool_inherit(tb_pool* pool, tb_pool_history* history);
 /* Frees the pool and leaves its history: every slot ever handed out starts past
- * the generations of the handles to it. false when out of memory (then the
- * history is freed and the world slot must not be used again). */
+ * the generations of the handles to it. false when out of memory, or when a
+ * slot has used up half its generations (TB_POOL_WORN): then the history is
+ * freed and the world slot must not be used again. A world whose slot starts
+ * that far on would retire slots, and so lay out its objects, differently
+ * from the same world in a fresh slot; below it only a world reusing one
+ * object slot 32,768 times does. */
+#define TB_POOL_WORN 32768
 bool tb_pool_end_life(tb_pool* pool, tb_pool_history* history);
 /* Returns a zeroed slot index, or -1 when out of memory. */
 int tb_pool_alloc(tb_pool* pool);
