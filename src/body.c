@@ -49,22 +49,26 @@ static float past(float x, float limit) {
   return 0.0f;
 }
 
-/* The larger of two overshoots on one axis. They cannot point opposite ways
- * unless the body is as wide as the world, and then either will do. */
-static float larger(float a, float b) { return fabsf(a) > fabsf(b) ? a : b; }
-
 void tb_body_keep_in_world(tb_body* b) {
   /* The shapes lie within max_extent of the centre. Floats near TB_MAX_LENGTH
    * are 1 m apart: two of those spacings absorb the rounding of their boxes,
    * so a shape that was inside stays insertable. */
-  float inner = fmaxf(TB_MAX_LENGTH - b->max_extent - 2.0f, 0.0f);
-  tb_vec2 back = {larger(past(b->center.x, inner), past(b->transform.p.x, TB_MAX_LENGTH)),
-                  larger(past(b->center.y, inner), past(b->transform.p.y, TB_MAX_LENGTH))};
-  if (back.x == 0.0f && back.y == 0.0f) return;
-  b->center = tb_sub(b->center, back);
+  float inner = fmaxf(TB_MAX_LENGTH - b->max_extent - 2.0f, 0.0f), edge = TB_MAX_LENGTH - 2.0f;
+  tb_vec2 old = b->center;
+  if (past(old.x, inner) == 0.0f && past(old.y, inner) == 0.0f && past(b->transform.p.x, TB_MAX_LENGTH) == 0.0f &&
+      past(b->transform.p.y, TB_MAX_LENGTH) == 0.0f)
+    return;
+  /* Set the centre at the edge rather than subtract the overshoot: a body
+   * flung to 1e12 m has an overshoot whose float rounding (65 km there) would
+   * leave it beyond. Then the origin (which may lie off the shapes) likewise. */
+  tb_vec2 c = {fminf(fmaxf(old.x, -inner), inner), fminf(fmaxf(old.y, -inner), inner)};
+  tb_vec2 p = tb_sub(c, tb_rotate(b->transform.q, b->local_center));
+  tb_vec2 shift = {past(p.x, edge), past(p.y, edge)};
+  b->center = tb_sub(c, shift);
   b->center_residual = (tb_vec2){0.0f, 0.0f};
-  b->transform.p = tb_sub(b->transform.p, back);
+  b->transform.p = tb_sub(p, shift);
   /* the edge holds it like a wall: no speed outwards */
+  tb_vec2 back = tb_sub(old, b->center);
   if (back.x * b->linear_velocity.x > 0.0f) b->linear_velocity.x = 0.0f;
   if (back.y * b->linear_velocity.y > 0.0f) b->linear_velocity.y = 0.0f;
 }
