@@ -26,8 +26,8 @@ static bool query_ok(const char* fn, const char* name, const void* geom, const c
     return false;
   }
   if (!tb_transform_ok(xf)) {
-    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: transform xf is not finite, beyond TB_MAX_LENGTH or not a unit rotation",
-            fn);
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT,
+            "%s: transform xf is not finite, beyond TB_MAX_LENGTH or not a unit rotation", fn);
     return false;
   }
   if (point != NULL && !tb_point_ok(*point)) {

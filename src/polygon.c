@@ -74,6 +74,7 @@ tb_result tb_make_polygon_from_hull(const tb_hull* hull, float radius, tb_polygo
 
 static tb_result offset_polygon(const char* fn, const tb_hull* hull, tb_vec2 position, float angle, float radius,
                                 tb_polygon* out) {
+  if (out == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: out is NULL", fn);
   if (!tb_point_ok(position))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: position is not finite or beyond TB_MAX_LENGTH", fn);
   if (tb_check_angle(NULL, fn, "angle", angle) != TB_OK) return tb_last_result();

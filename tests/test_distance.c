@@ -819,8 +819,8 @@ START_TEST(toi_vs_brute_force) {
     }
     if (!ok) {
       ++bad;
-      snprintf(what, sizeof what, "sweep %d: state %d t %.6f gap %.6f, brute first %.5f", i, (int)out.state, out.fraction, g,
-               first);
+      snprintf(what, sizeof what, "sweep %d: state %d t %.6f gap %.6f, brute first %.5f", i, (int)out.state,
+               out.fraction, g, first);
     }
   }
   fprintf(stderr,

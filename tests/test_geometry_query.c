@@ -380,7 +380,8 @@ END_TEST
 
 START_TEST(segment_distance_by_hand) {
   /* crossing at (1, 0): distance 0, the crossing point on both */
-  tb_segment_distance_output s = tb_segment_distance((tb_vec2){0, 0}, (tb_vec2){2, 0}, (tb_vec2){1, -1}, (tb_vec2){1, 1});
+  tb_segment_distance_output s =
+      tb_segment_distance((tb_vec2){0, 0}, (tb_vec2){2, 0}, (tb_vec2){1, -1}, (tb_vec2){1, 1});
   ck_assert_near(s.distance_sq, 0.0, 1e-12);
   ck_assert_vec_near(s.closest1, 1.0, 0.0, TOL);
   ck_assert_near(s.fraction1, 0.5, TOL);
@@ -412,8 +413,8 @@ START_TEST(shape_cast_by_hand) {
    * with normal (1, 0). The cast stops within TB_CAST_TOLERANCE of contact,
    * never past it: fraction in [0.425 - tol / 10, 0.425] (+ rounding) */
   tb_circle c = {{0.0f, 0.0f}, 0.25f};
-  tb_shape_cast_input in = {box_proxy(0.5f, 0.5f, 0.0f), tb_make_circle_proxy(&c), identity, xf_make(5, 0, 0),
-                            {-10.0f, 0.0f}};
+  tb_shape_cast_input in = {
+      box_proxy(0.5f, 0.5f, 0.0f), tb_make_circle_proxy(&c), identity, xf_make(5, 0, 0), {-10.0f, 0.0f}};
   tb_cast_output out;
   ck_assert_int_eq(tb_shape_cast(&in, &out), TB_OK);
   ck_assert(out.hit);

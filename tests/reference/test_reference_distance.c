@@ -371,7 +371,8 @@ START_TEST(toi_matches_box2d_and_brute_force) {
       tb_bad_gap += g < target - tol - 1e-5f || g > target + tol + 1e-5f;
     }
     if (first >= 0.0) {
-      tb_late += !(t.state == TB_TOI_HIT && t.fraction <= first + 1e-6) && !(t.state == TB_TOI_FAILED && t.fraction <= first);
+      tb_late +=
+          !(t.state == TB_TOI_HIT && t.fraction <= first + 1e-6) && !(t.state == TB_TOI_FAILED && t.fraction <= first);
       if (!b2_hit) {
         /* Box2D missed it: a contact that ends again before t = 1 (the known
          * limit of its root finder), or did the shapes end up closer than the
