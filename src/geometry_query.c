@@ -39,32 +39,27 @@ static bool query_ok(const char* fn, const char* name, const void* geom, const c
   return true;
 }
 
-/* The four geometry kinds as stand-in shapes: NULL-safe checks, then the copy. */
-static bool circle_ok(const char* fn, const tb_circle* g, tb_transform xf, const tb_vec2* point, tb_shape* s) {
-  if (!query_ok(fn, "circle", g, g != NULL ? tb_check_circle(g) : NULL, xf, point, s)) return false;
-  s->type = TB_SHAPE_CIRCLE;
-  s->geom.circle = *g;
-  return true;
-}
-
-static bool capsule_ok(const char* fn, const tb_capsule* g, tb_transform xf, const tb_vec2* point, tb_shape* s) {
-  if (!query_ok(fn, "capsule", g, g != NULL ? tb_check_capsule(g) : NULL, xf, point, s)) return false;
-  s->type = TB_SHAPE_CAPSULE;
-  s->geom.capsule = *g;
-  return true;
-}
-
-static bool segment_ok(const char* fn, const tb_segment* g, tb_transform xf, const tb_vec2* point, tb_shape* s) {
-  if (!query_ok(fn, "segment", g, g != NULL ? tb_check_segment(g) : NULL, xf, point, s)) return false;
-  s->type = TB_SHAPE_SEGMENT;
-  s->geom.segment = *g;
-  return true;
-}
-
-static bool polygon_ok(const char* fn, const tb_polygon* g, tb_transform xf, const tb_vec2* point, tb_shape* s) {
-  if (!query_ok(fn, "polygon", g, g != NULL ? tb_check_polygon(g) : NULL, xf, point, s)) return false;
-  s->type = TB_SHAPE_POLYGON;
-  s->geom.polygon = *g;
+/* A geometry of the given type as a stand-in shape, after query_ok. */
+static bool stand_in(const char* fn, tb_shape_type type, const void* geom, tb_transform xf, const tb_vec2* point,
+                     tb_shape* s) {
+  static const char* const names[] = {"circle", "capsule", "segment", "polygon"};
+  const char* why = NULL;
+  if (geom != NULL) {
+    switch (type) {
+      case TB_SHAPE_CIRCLE: why = tb_check_circle(geom); break;
+      case TB_SHAPE_CAPSULE: why = tb_check_capsule(geom); break;
+      case TB_SHAPE_SEGMENT: why = tb_check_segment(geom); break;
+      default: why = tb_check_polygon(geom); break;
+    }
+  }
+  if (!query_ok(fn, names[type], geom, why, xf, point, s)) return false;
+  s->type = type;
+  switch (type) {
+    case TB_SHAPE_CIRCLE: s->geom.circle = *(const tb_circle*)geom; break;
+    case TB_SHAPE_CAPSULE: s->geom.capsule = *(const tb_capsule*)geom; break;
+    case TB_SHAPE_SEGMENT: s->geom.segment = *(const tb_segment*)geom; break;
+    default: s->geom.polygon = *(const tb_polygon*)geom; break;
+  }
   return true;
 }
 
@@ -74,44 +69,44 @@ static const tb_aabb zero_box = {{0.0f, 0.0f}, {0.0f, 0.0f}};
 
 tb_aabb tb_compute_circle_aabb(const tb_circle* circle, tb_transform xf) {
   tb_shape s;
-  return circle_ok(__func__, circle, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
+  return stand_in(__func__, TB_SHAPE_CIRCLE, circle, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
 }
 
 tb_aabb tb_compute_capsule_aabb(const tb_capsule* capsule, tb_transform xf) {
   tb_shape s;
-  return capsule_ok(__func__, capsule, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
+  return stand_in(__func__, TB_SHAPE_CAPSULE, capsule, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
 }
 
 tb_aabb tb_compute_segment_aabb(const tb_segment* segment, tb_transform xf) {
   tb_shape s;
-  return segment_ok(__func__, segment, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
+  return stand_in(__func__, TB_SHAPE_SEGMENT, segment, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
 }
 
 tb_aabb tb_compute_polygon_aabb(const tb_polygon* polygon, tb_transform xf) {
   tb_shape s;
-  return polygon_ok(__func__, polygon, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
+  return stand_in(__func__, TB_SHAPE_POLYGON, polygon, xf, NULL, &s) ? tb_shape_geom_aabb(&s, xf) : zero_box;
 }
 
 /* --------------------------------------------------------------- point tests -- */
 
 bool tb_point_in_circle(const tb_circle* circle, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  return circle_ok(__func__, circle, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
+  return stand_in(__func__, TB_SHAPE_CIRCLE, circle, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
 }
 
 bool tb_point_in_capsule(const tb_capsule* capsule, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  return capsule_ok(__func__, capsule, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
+  return stand_in(__func__, TB_SHAPE_CAPSULE, capsule, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
 }
 
 bool tb_point_in_segment(const tb_segment* segment, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  return segment_ok(__func__, segment, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
+  return stand_in(__func__, TB_SHAPE_SEGMENT, segment, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
 }
 
 bool tb_point_in_polygon(const tb_polygon* polygon, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  return polygon_ok(__func__, polygon, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
+  return stand_in(__func__, TB_SHAPE_POLYGON, polygon, xf, &point, &s) && tb_shape_geom_contains(&s, xf, point);
 }
 
 /* ------------------------------------------------------------ closest points -- */
@@ -134,21 +129,21 @@ static tb_vec2 closest_on_edge(tb_vec2 p, tb_vec2 a, tb_vec2 b) {
 
 tb_vec2 tb_closest_point_on_circle(const tb_circle* circle, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  if (!circle_ok(__func__, circle, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
+  if (!stand_in(__func__, TB_SHAPE_CIRCLE, circle, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
   tb_vec2 p = tb_inv_transform_point(xf, point);
   return round_out(xf, point, p, circle->center, circle->radius);
 }
 
 tb_vec2 tb_closest_point_on_capsule(const tb_capsule* capsule, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  if (!capsule_ok(__func__, capsule, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
+  if (!stand_in(__func__, TB_SHAPE_CAPSULE, capsule, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
   tb_vec2 p = tb_inv_transform_point(xf, point);
   return round_out(xf, point, p, closest_on_edge(p, capsule->center1, capsule->center2), capsule->radius);
 }
 
 tb_vec2 tb_closest_point_on_segment(const tb_segment* segment, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  if (!segment_ok(__func__, segment, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
+  if (!stand_in(__func__, TB_SHAPE_SEGMENT, segment, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
   tb_vec2 p = tb_inv_transform_point(xf, point);
   return tb_transform_point(xf, closest_on_edge(p, segment->point1, segment->point2));
 }
@@ -157,7 +152,7 @@ tb_vec2 tb_closest_point_on_segment(const tb_segment* segment, tb_transform xf, 
  * the nearest edge (for a convex polygon the nearest point of the boundary). */
 tb_vec2 tb_closest_point_on_polygon(const tb_polygon* polygon, tb_transform xf, tb_vec2 point) {
   tb_shape s;
-  if (!polygon_ok(__func__, polygon, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
+  if (!stand_in(__func__, TB_SHAPE_POLYGON, polygon, xf, &point, &s)) return (tb_vec2){0.0f, 0.0f};
   tb_vec2 p = tb_inv_transform_point(xf, point);
   const int n = polygon->count;
   bool inside = true;
