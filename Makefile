@@ -24,6 +24,19 @@ LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 LIB_A := $(BUILD)/libtumble.a
 LIB_SO := $(BUILD)/libtumble.so
 
+# The headless renderer (render/, public header include/tumble_render.h): a
+# second installed library, on OSMesa (software OpenGL; never also -lGL,
+# whose symbols would clash) and libpng (tools/deps.sh demo installs them).
+# `make render` builds it; the demos, their tests and `make install` use it.
+RENDER_PKGS := osmesa libpng
+RENDER_CFLAGS = $(shell pkg-config --cflags $(RENDER_PKGS) 2>/dev/null)
+RENDER_LIBS = $(shell pkg-config --libs $(RENDER_PKGS) 2>/dev/null || echo -lOSMesa -lpng)
+RENDER_LIB_SRC := $(wildcard render/*.c)
+RENDER_LIB_OBJ := $(RENDER_LIB_SRC:%.c=$(BUILD)/obj/%.o)
+RENDER_LIB_A := $(BUILD)/libtumble-render.a
+RENDER_LIB_SO := $(BUILD)/libtumble-render.so
+VERSION := 0.1.0
+
 # one check executable per suite; reference suites also link the Box2D shim
 UNIT_SRC := $(filter-out tests/test_util.c,$(wildcard tests/test_*.c))
 UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -39,7 +52,7 @@ CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 # keep test and shim objects between builds (they are intermediate files otherwise)
 .SECONDARY:
 
-.PHONY: all lib test tests sanitize install uninstall clean format format-check deps-test
+.PHONY: all lib render test tests sanitize install uninstall deb clean format format-check deps-test deps-render
 
 # Each area has its own fragment in mk/ (demo, bench, stress, fuzz, ...). A
 # fragment may add to these hooks:
@@ -77,6 +90,27 @@ $(LIB_A): $(LIB_OBJ)
 $(LIB_SO): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) -shared $(EXTRA_CFLAGS) -Wl,-soname,libtumble.so.0 -o $@ $^ $(LDLIBS_ALL)
+
+deps-render:
+	@tools/deps.sh demo
+
+render: deps-render
+	@$(MAKE) --no-print-directory $(RENDER_LIB_A) $(RENDER_LIB_SO)
+
+$(BUILD)/obj/render/%.o: render/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) $(RENDER_CFLAGS) -c $< -o $@
+
+$(RENDER_LIB_A): $(RENDER_LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+# Needs libtumble.so.0 at run time (linked against build/libtumble.so).
+$(RENDER_LIB_SO): $(RENDER_LIB_OBJ) $(LIB_SO)
+	@mkdir -p $(dir $@)
+	$(CC) -shared $(EXTRA_CFLAGS) -Wl,-soname,libtumble-render.so.0 -o $@ $(RENDER_LIB_OBJ) \
+	  -L$(BUILD) -ltumble $(RENDER_LIBS) $(LDLIBS_ALL)
 
 # ---- tests -------------------------------------------------------------------
 # Test objects need check's include flags; computed only when tests are built.
