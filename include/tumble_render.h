@@ -101,11 +101,12 @@ tb_render_result tb_render_camera_follow(const tb_renderer* renderer, tb_body_id
                                          const tb_aabb* bounds, tb_render_camera* out);
 
 /* The box the world's bodies fill: the bounding boxes of the shapes of every
- * dynamic and kinematic body, and of the static shapes only the parts that lie
- * near them (within a quarter of the box's larger side, at least 0.5 m), so
- * that a 200 m ground does not shrink a 2 m scene to a speck. A world with
- * only static shapes: all of them; one with no shape at all: a 20 m square
- * around the origin. Shapes of disabled bodies are not counted. */
+ * dynamic and kinematic body, of every sensor and of those bodies' joint
+ * anchors, and of the other static shapes only the parts that lie near them
+ * (within a quarter of the box's larger side, at least 0.5 m), so that a
+ * 200 m ground does not shrink a 2 m scene to a speck. A world with only
+ * static shapes: all of them; one with no shape at all: a 20 m square around
+ * the origin. Shapes of disabled bodies are not counted. */
 tb_render_result tb_render_world_bounds(tb_world_id world, tb_aabb* out);
 
 /* ----------------------------------------------------------------- drawing -- */

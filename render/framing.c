@@ -88,10 +88,27 @@ static void grow(tb_aabb* box, tb_aabb a) {
   box->upper.y = fmaxf(box->upper.y, a.upper.y);
 }
 
+/* A joint's anchors on both bodies: a pendulum's pivot is part of the scene. */
+static void add_joint_anchors(bounds_pass* pass, tb_body_id body) {
+  tb_joint_id joints[16];
+  int count = tb_body_get_joints(body, joints, 16);
+  for (int i = 0; i < count && i < 16; ++i) {
+    tb_vec2 a = tb_body_get_world_point(tb_joint_get_body_a(joints[i]), tb_joint_get_local_anchor_a(joints[i]));
+    tb_vec2 b = tb_body_get_world_point(tb_joint_get_body_b(joints[i]), tb_joint_get_local_anchor_b(joints[i]));
+    grow(&pass->box, (tb_aabb){a, a});
+    grow(&pass->box, (tb_aabb){b, b});
+  }
+}
+
+/* Pass 1 takes the shapes of moving bodies and every sensor (what lights up
+ * belongs in the picture), with the moving bodies' joint anchors; pass 2 the
+ * other static shapes, clipped to near. */
 static bool add_shape(tb_shape_id shape, void* context) {
   bounds_pass* pass = context;
-  bool is_static = tb_body_get_type(tb_shape_get_body(shape)) == TB_STATIC_BODY;
-  if (is_static == pass->moving) return true;
+  tb_body_id body = tb_shape_get_body(shape);
+  bool is_static = tb_body_get_type(body) == TB_STATIC_BODY;
+  bool first_pass = !is_static || tb_shape_is_sensor(shape);
+  if (first_pass != pass->moving) return true;
   tb_aabb a = tb_shape_get_aabb(shape);
   if (!pass->moving) {
     a.lower.x = fmaxf(a.lower.x, pass->near.lower.x);
@@ -99,6 +116,8 @@ static bool add_shape(tb_shape_id shape, void* context) {
     a.upper.x = fminf(a.upper.x, pass->near.upper.x);
     a.upper.y = fminf(a.upper.y, pass->near.upper.y);
     if (a.lower.x > a.upper.x || a.lower.y > a.upper.y) return true;
+  } else if (!is_static) {
+    add_joint_anchors(pass, body);
   }
   grow(&pass->box, a);
   pass->count += 1;

@@ -323,6 +323,25 @@ START_TEST(world_bounds_ignore_far_ground) {
   ck_assert_int_eq(tb_render_camera_fit_world(renderer, w, 0.0f, &c), TB_RENDER_OK);
   ck_assert_near(c.center.x, 3.0f, 0.05f);
   ck_assert_near(c.half_height, 0.75f, 0.05f); /* 2 m x 1.5 m on a 2:1 picture: the height decides */
+  /* a static sensor counts whole, wherever it is; so does a joint's anchor */
+  tb_shape_def sensor = tb_default_shape_def();
+  sensor.is_sensor = true;
+  tb_polygon s;
+  tb_make_offset_box(0.5f, 0.5f, (tb_vec2){10.0f, 1.0f}, 0.0f, &s);
+  tb_create_polygon_shape(ground, &sensor, &s);
+  ck_assert_int_eq(tb_render_world_bounds(w, &box), TB_RENDER_OK);
+  /* 2.5 to 10.5 with the sensor, and a quarter of those 8 m of ground beyond */
+  ck_assert_near(box.lower.x, 0.5f, 0.05f);
+  ck_assert_near(box.upper.x, 12.5f, 0.05f);
+  ck_assert_near(box.upper.y, 1.5f, 0.05f);
+  tb_body_id pendulum = tbt_box_body(w, 3.0f, 5.0f, 0.1f, 0.1f);
+  tb_revolute_joint_def jd = tb_default_revolute_joint_def();
+  jd.body_a = ground;
+  jd.body_b = pendulum;
+  jd.local_anchor_a = (tb_vec2){3.0f, 8.0f};
+  ck_assert(!tb_joint_id_is_null(tb_create_revolute_joint(w, &jd)));
+  ck_assert_int_eq(tb_render_world_bounds(w, &box), TB_RENDER_OK);
+  ck_assert_near(box.upper.y, 8.0f, 0.05f);
   tb_destroy_world(w);
 }
 END_TEST
