@@ -527,9 +527,13 @@ static Suite* render_suite(void) {
   tcase_add_test(tc, options_switch_and_colour);
   tcase_add_test(tc, world_bounds_ignore_far_ground);
   tcase_add_test(tc, caption_wraps_and_the_fit_clears_it);
-  tcase_add_test(tc, video_errors_are_clear);
-  tcase_add_test(tc, video_is_encoded_by_ffmpeg);
   suite_add_tcase(s, tc);
+  TCase* video = tcase_create("video");
+  tcase_add_checked_fixture(video, setup, teardown);
+  tcase_set_timeout(video, 60); /* ffmpeg's start and palette pass, on a shared core */
+  tcase_add_test(video, video_errors_are_clear);
+  tcase_add_test(video, video_is_encoded_by_ffmpeg);
+  suite_add_tcase(s, video);
   TCase* scenes = tcase_create("scenes");
   tcase_add_checked_fixture(scenes, setup, teardown);
   tcase_set_timeout(scenes, 120); /* the largest scene takes a few seconds on a shared core */
