@@ -81,6 +81,7 @@ typedef struct tb_wide_point {
   tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
   tb_f4 shift_a, shift_b;    /* the common point's share of the relative displacement, per arm (see arms_now) */
   tb_f4 collided_separation; /* s0 as collided; base_separation differs past the patch's end (measure_slide) */
+  tb_f4 separation;          /* s at the last position update (see tb_contact_solver_solve) */
 } tb_wide_point;
 
 typedef struct tb_wide_contact {
@@ -742,12 +743,11 @@ static inline void measure_slide(tb_wide_contact* c, const wide_body* A, const w
 }
 
 /* The soft terms of one point's normal impulse: its mass scale, and
- * r = v_n + bias, with the separation s predicted from the bodies' motion. */
+ * r = v_n + bias, at separation s. */
 static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_arms* arms,
-                                  const wide_body* A, const wide_body* B, float inv_h, float push, bool use_bias,
-                                  tb_f4* mass_scale) {
+                                  const wide_body* A, const wide_body* B, tb_f4 s, float inv_h, float push,
+                                  bool use_bias, tb_f4* mass_scale) {
   const tb_f4 zero = splat(0.0f), one = splat(1.0f);
-  tb_f4 s = normal_motion(c, cp, A, B) + cp->base_separation;
   tb_i4 speculative = s > zero;
   tb_f4 bias;
   if (use_bias) {
@@ -778,11 +778,15 @@ static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, const w
   apply_impulse(c, arms, impulse * tx, impulse * ty, A, B);
 }
 
-/* Always inlined: the biased and the relax pass each get a copy without the
- * other's branches. */
+/* Always inlined: each kind of pass gets a copy without the others'
+ * branches. measure: the first pass after a position update, which measures
+ * the slides and keeps the points' separations; stored: a later pass at the
+ * same positions, which reads those and so needs only the bodies' velocities. */
 static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h,
-                                                             float push, bool use_bias, bool measure, tb_f4* change) {
-  wide_body A = gather(states, c->a), B = gather(states, c->b);
+                                                             float push, bool use_bias, bool measure, bool stored,
+                                                             tb_f4* change) {
+  wide_body A = stored ? gather_velocities(states, c->a) : gather(states, c->a);
+  wide_body B = stored ? gather_velocities(states, c->b) : gather(states, c->b);
   const tb_f4 zero = splat(0.0f);
   tb_wide_point *p1 = &c->p[0], *p2 = &c->p[1];
   /* Per point: the soft terms and r = v0 + bias, where v0 is the normal speed
@@ -793,8 +797,11 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   wide_arms arms1 = stored_arms(p1), arms2 = stored_arms(p2);
   tb_f4 ms1, ms2;
   if (measure) measure_slide(c, &A, &B); /* once per position update: later passes see the same positions */
-  tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, inv_h, push, use_bias, &ms1);
-  tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, inv_h, push, use_bias, &ms2);
+  tb_f4 s1 = stored ? p1->separation : normal_motion(c, p1, &A, &B) + p1->base_separation;
+  tb_f4 s2 = stored ? p2->separation : normal_motion(c, p2, &A, &B) + p2->base_separation;
+  if (measure) p1->separation = s1, p2->separation = s2;
+  tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, s1, inv_h, push, use_bias, &ms1);
+  tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, s2, inv_h, push, use_bias, &ms2);
   tb_f4 a1 = p1->normal_impulse, a2 = p2->normal_impulse;
   /* Both points at once (Box2D 2.4's block solver for the mixed LCP
    * x >= 0, K x + r0 >= 0, complementary; here scaled by mass_scale): the
@@ -1002,19 +1009,28 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
    * is within its patch. */
   bool measure = !use_bias && ctx->bodies_moved;
   if (measure) ctx->bodies_moved = false;
+  /* The separations measured there hold until the next position update: for
+   * the later relax passes and the next substep's biased pass (only velocities
+   * change in between). The first substep's biased pass computes its own. */
+  bool stored = !measure && ctx->position_updates > 0;
+  float inv_h = ctx->inv_h, push = ctx->contact_push_max_velocity;
+  tb_solver_body* states = ctx->states;
   /* one loop per pass kind, each with solve_wide specialised for it */
   for (int group = 0; group < 2; ++group) {
     int lo = group == 0 ? 0 : fixed_from, hi = group == 0 ? fixed_from : n;
     int first = backward ? hi - 1 : lo, step = backward ? -1 : 1;
-    if (use_bias)
+    if (use_bias && stored)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, true, false, &change);
+        solve_wide(&wide[b], states, inv_h, push, true, false, true, &change);
+    else if (use_bias)
+      for (int i = lo, b = first; i < hi; ++i, b += step)
+        solve_wide(&wide[b], states, inv_h, push, true, false, false, &change);
     else if (measure)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, true, &change);
+        solve_wide(&wide[b], states, inv_h, push, false, true, false, &change);
     else
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx->states, ctx->inv_h, ctx->contact_push_max_velocity, false, false, &change);
+        solve_wide(&wide[b], states, inv_h, push, false, false, true, &change);
   }
   return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }
