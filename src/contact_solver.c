@@ -38,6 +38,7 @@
 
 #include "contact.h"
 #include "math_internal.h"
+#include "relax_activity.h"
 #include "solver.h"
 #include "world.h"
 
@@ -208,7 +209,7 @@ static inline __attribute__((always_inline)) wide_body gather(const tb_solver_bo
   return b;
 }
 
-static inline void scatter(tb_solver_body* states, const int32_t* idx, const wide_body* b) {
+static inline __attribute__((always_inline)) void scatter(tb_solver_body* states, const int32_t* idx, const wide_body* b) {
   tb_f4 m[4] = {b->vx, b->vy, b->w, b->inv_mass};
   transpose(m);
   memcpy(&states[idx[0]], &m[0], sizeof m[0]);
@@ -627,7 +628,7 @@ typedef struct wide_arms {
   tb_f4 rax, ray, rbx, rby;
 } wide_arms;
 
-static inline wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
+static inline __attribute__((always_inline)) wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
                                  const wide_body* B) {
   tb_f4 dx = min4(max4(B->dpx - A->dpx, -c->shift_limit), c->shift_limit);
   tb_f4 dy = min4(max4(B->dpy - A->dpy, -c->shift_limit), c->shift_limit);
@@ -636,12 +637,12 @@ static inline wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* 
 }
 
 /* The arms stored by tb_contact_solver_update_arms (or prepare). */
-static inline wide_arms stored_arms(const tb_wide_point* cp) {
+static inline __attribute__((always_inline)) wide_arms stored_arms(const tb_wide_point* cp) {
   return (wide_arms){cp->now_rax, cp->now_ray, cp->now_rbx, cp->now_rby};
 }
 
 /* Keeps count of a normal impulse applied at these arms (see restitution_targets). */
-static inline void count_normal(tb_wide_point* cp, const wide_arms* arms, tb_f4 impulse) {
+static inline __attribute__((always_inline)) void count_normal(tb_wide_point* cp, const wide_arms* arms, tb_f4 impulse) {
   cp->applied += impulse;
   cp->applied_rax += impulse * arms->rax;
   cp->applied_ray += impulse * arms->ray;
@@ -650,7 +651,7 @@ static inline void count_normal(tb_wide_point* cp, const wide_arms* arms, tb_f4 
 }
 
 /* An impulse P at each end of one point: -P on A, +P on B. */
-static inline void apply_impulse(const tb_wide_contact* c, const wide_arms* cp, tb_f4 Px, tb_f4 Py, wide_body* A,
+static inline __attribute__((always_inline)) void apply_impulse(const tb_wide_contact* c, const wide_arms* cp, tb_f4 Px, tb_f4 Py, wide_body* A,
                                  wide_body* B) {
   A->vx -= c->ma * Px;
   A->vy -= c->ma * Py;
@@ -661,7 +662,7 @@ static inline void apply_impulse(const tb_wide_contact* c, const wide_arms* cp, 
 }
 
 /* (v_B + w_B x r_B) - (v_A + w_A x r_A) at one point */
-static inline void relative_velocity(const wide_arms* cp, const wide_body* A, const wide_body* B, tb_f4* dvx,
+static inline __attribute__((always_inline)) void relative_velocity(const wide_arms* cp, const wide_body* A, const wide_body* B, tb_f4* dvx,
                                      tb_f4* dvy) {
   *dvx = (B->vx + -B->w * cp->rby) - (A->vx + -A->w * cp->ray);
   *dvy = (B->vy + B->w * cp->rbx) - (A->vy + A->w * cp->rax);
@@ -687,7 +688,7 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
 /* How far one point's anchors have moved apart along the normal since the
  * step began, to first order in the angles (see the top); the separation
  * now is this plus base_separation. */
-static inline tb_f4 normal_motion(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
+static inline __attribute__((always_inline)) tb_f4 normal_motion(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
                                   const wide_body* B) {
   /* da x r = (-da r.y, da r.x), as tb_cross_sv */
   tb_f4 prax = -A->da * cp->ray, pray = A->da * cp->rax;
@@ -734,7 +735,7 @@ static __attribute__((noinline)) void set_slide_gaps(tb_wide_contact* c, const w
   }
 }
 
-static inline void measure_slide(tb_wide_contact* c, const wide_body* A, const wide_body* B) {
+static inline __attribute__((always_inline)) void measure_slide(tb_wide_contact* c, const wide_body* A, const wide_body* B) {
   tb_f4 d = c->ny * (B->dpx - A->dpx) - c->nx * (B->dpy - A->dpy) - B->da * c->lever_b + A->da * c->lever_a;
   tb_f4 beyond = max4(c->slide_min - d, d - c->slide_max);
   tb_i4 off = beyond > splat(TB_SLIDE_TOLERANCE);
@@ -744,7 +745,7 @@ static inline void measure_slide(tb_wide_contact* c, const wide_body* A, const w
 
 /* The soft terms of one point's normal impulse: its mass scale, and
  * r = v_n + bias, at separation s. */
-static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_arms* arms,
+static inline __attribute__((always_inline)) tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_arms* arms,
                                   const wide_body* A, const wide_body* B, tb_f4 s, float inv_h, float push,
                                   bool use_bias, tb_f4* mass_scale) {
   const tb_f4 zero = splat(0.0f), one = splat(1.0f);
@@ -763,8 +764,9 @@ static inline tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point*
 }
 
 /* Friction at one point: the tangent impulse, clamped by mu times the
- * point's normal impulse, towards the surfaces' tangent speed. */
-static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, const wide_arms* arms, wide_body* A,
+ * point's normal impulse, towards the surfaces' tangent speed. Returns the
+ * impulse applied. */
+static inline __attribute__((always_inline)) tb_f4 solve_friction(tb_wide_contact* c, tb_wide_point* cp, const wide_arms* arms, wide_body* A,
                                   wide_body* B) {
   tb_f4 tx = c->ny, ty = -c->nx;
   tb_f4 dvx, dvy;
@@ -776,15 +778,17 @@ static inline void solve_friction(tb_wide_contact* c, tb_wide_point* cp, const w
   impulse = total - cp->tangent_impulse;
   cp->tangent_impulse = total;
   apply_impulse(c, arms, impulse * tx, impulse * ty, A, B);
+  return impulse;
 }
 
 /* Always inlined: each kind of pass gets a copy without the others'
  * branches. measure: the first pass after a position update, which measures
  * the slides and keeps the points' separations; stored: a later pass at the
  * same positions, which reads those and so needs only the bodies' velocities. */
-static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c, tb_solver_body* states, float inv_h,
-                                                             float push, bool use_bias, bool measure, bool stored,
-                                                             tb_f4* change) {
+static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c, tb_step_context* ctx, bool use_bias,
+                                                             bool measure, bool stored, tb_f4* change) {
+  tb_solver_body* states = ctx->states;
+  float inv_h = ctx->inv_h, push = ctx->contact_push_max_velocity;
   wide_body A = stored ? gather_velocities(states, c->a) : gather(states, c->a);
   wide_body B = stored ? gather_velocities(states, c->b) : gather(states, c->b);
   const tb_f4 zero = splat(0.0f);
@@ -838,9 +842,25 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   if (c->bouncy) count_normal(p2, &arms2, d2);
   /* the normal speed each point's change made (its own K_ii; the coupling
    * term is left out), for the relax passes' stop */
-  if (!use_bias) *change = max4(*change, max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22));
-  solve_friction(c, p1, &arms1, &A, &B);
-  solve_friction(c, p2, &arms2, &A, &B);
+  tb_f4 normal_change = max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22);
+  if (!use_bias) *change = max4(*change, normal_change);
+  tb_f4 f1 = solve_friction(c, p1, &arms1, &A, &B);
+  tb_f4 f2 = solve_friction(c, p2, &arms2, &A, &B);
+  if (!use_bias) {
+    /* the relax passes' record (relax_activity.h): the points' speed changes,
+     * friction's taken at the normal K (the same order as the tangent one) */
+    tb_f4 moved = max4(normal_change, max4(max4(f1, -f1) * c->k11, max4(f2, -f2) * c->k22));
+    tb_i4 noted = moved > splat(TB_RELAX_TOLERANCE);
+    /* branch-free: a body not to note (or the static dummy) writes the sink */
+    tb_i4 a, b, stat = {ctx->static_index, ctx->static_index, ctx->static_index, ctx->static_index};
+    tb_i4 sink = stat + 1;
+    memcpy(&a, c->a, sizeof a);
+    memcpy(&b, c->b, sizeof b);
+    a = (a & (noted & (a != stat))) | (sink & ~(noted & (a != stat)));
+    b = (b & (noted & (b != stat))) | (sink & ~(noted & (b != stat)));
+    int32_t* changed_in = ctx->changed_in;
+    for (int lane = 0; lane < 4; ++lane) changed_in[a[lane]] = changed_in[b[lane]] = ctx->relax_pass;
+  }
   if (c->rolling) {
     tb_f4 limit = c->rolling_resistance * (x1 + x2);
     tb_f4 impulse = -c->rolling_mass * (B.w - A.w);
@@ -999,6 +1019,15 @@ void tb_contact_solver_reset(tb_world* w) {
  * floor's contact stops the light box, and what the heavy one still closes
  * goes into the contact between the two boxes, which can push both apart
  * again; the static world cannot move out of the way. */
+/* Whether a later relax pass solves the block (relax_activity.h). */
+static inline __attribute__((always_inline)) bool block_active(const tb_step_context* ctx, const tb_wide_contact* c) {
+  const int32_t* changed_in = ctx->changed_in;
+  int32_t since = ctx->relax_pass - 1; /* the static dummy's entry is never written (0) */
+  int active = 0;
+  for (int lane = 0; lane < 4; ++lane) active |= (changed_in[c->a[lane]] >= since) | (changed_in[c->b[lane]] >= since);
+  return active != 0;
+}
+
 float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, bool backward) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   tb_f4 change = splat(0.0f);
@@ -1013,24 +1042,22 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
    * the later relax passes and the next substep's biased pass (only velocities
    * change in between). The first substep's biased pass computes its own. */
   bool stored = !measure && ctx->position_updates > 0;
-  float inv_h = ctx->inv_h, push = ctx->contact_push_max_velocity;
-  tb_solver_body* states = ctx->states;
   /* one loop per pass kind, each with solve_wide specialised for it */
   for (int group = 0; group < 2; ++group) {
     int lo = group == 0 ? 0 : fixed_from, hi = group == 0 ? fixed_from : n;
     int first = backward ? hi - 1 : lo, step = backward ? -1 : 1;
     if (use_bias && stored)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], states, inv_h, push, true, false, true, &change);
+        solve_wide(&wide[b], ctx, true, false, true, &change);
     else if (use_bias)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], states, inv_h, push, true, false, false, &change);
+        solve_wide(&wide[b], ctx, true, false, false, &change);
     else if (measure)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], states, inv_h, push, false, true, false, &change);
-    else
+        solve_wide(&wide[b], ctx, false, true, false, &change);
+    else /* a later relax pass: only blocks with a body that still moves */
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], states, inv_h, push, false, false, true, &change);
+        if (block_active(ctx, &wide[b])) solve_wide(&wide[b], ctx, false, false, true, &change);
   }
   return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }

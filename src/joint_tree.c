@@ -52,6 +52,7 @@
 #include "joint.h"
 #include "math_internal.h"
 #include "pool.h"
+#include "relax_activity.h"
 #include "world.h"
 
 /* The tree softness: the drift of a tree's rows is corrected at h omega = 8,
@@ -83,6 +84,7 @@ void tb_joint_tree_free(tb_joint_tree* t) {
   free(t->order);
   free(t->body_scratch);
   free(t->edges);
+  free(t->components);
   memset(t, 0, sizeof *t);
 }
 
@@ -124,7 +126,8 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   if (!tb_array_reserve((void**)&t->nodes, &t->node_capacity, bodies + joints, sizeof *t->nodes) ||
       !tb_array_reserve((void**)&t->order, &t->order_capacity, bodies + joints, sizeof *t->order) ||
       !tb_array_reserve((void**)&t->body_scratch, &t->body_capacity, 2 * bodies, sizeof *t->body_scratch) ||
-      !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges))
+      !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges) ||
+      !tb_array_reserve((void**)&t->components, &t->component_capacity, bodies + joints + 1, sizeof *t->components))
     return false;
   t->factored_for = -1;
   float hw = TB_TREE_H_OMEGA;
@@ -195,11 +198,14 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       if (ends[e] >= 0) t->edges[t->nodes[ends[e]].first + t->nodes[ends[e]].count++] = n;
   }
 
-  /* breadth-first from each unvisited node: parents before children */
+  /* breadth-first from each unvisited node: parents before children; each
+   * tree is one run of the order (its start in components) */
   for (int n = 0; n < t->node_count; ++n) t->nodes[n].parent = -2;
   int ordered = 0;
+  t->component_count = 0;
   for (int root = 0; root < t->node_count; ++root) {
     if (t->nodes[root].parent != -2) continue;
+    t->components[t->component_count++] = ordered;
     t->nodes[root].parent = -1;
     t->order[ordered++] = root;
     for (int q = ordered - 1; q < ordered; ++q) {
@@ -214,6 +220,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       }
     }
   }
+  t->components[t->component_count] = ordered;
   t->body_nodes = body_nodes;
   return true;
 }
@@ -340,13 +347,11 @@ static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
   }
 }
 
-/* The right-hand sides at the current velocities and impulses, and the two
- * substitutions through the factorisation. */
-static void substitute(tb_world* w, tb_step_context* ctx, bool use_bias) {
+/* The right-hand side of one node at the current velocities and impulses. */
+static void node_rhs(tb_world* w, tb_step_context* ctx, int i, double bias) {
   tb_joint_tree* t = &w->joint_tree;
-  double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
-  for (int i = t->body_nodes; i < t->node_count; ++i) {
-    tb_jt_node* n = &t->nodes[i];
+  tb_jt_node* n = &t->nodes[i];
+  if (i >= t->body_nodes) {
     const tb_joint* j = tb_joint_at(w, n->ref);
     const tb_solver_body* a = &ctx->states[j->solver_a];
     const tb_solver_body* b = &ctx->states[j->solver_b];
@@ -359,24 +364,38 @@ static void substitute(tb_world* w, tb_step_context* ctx, bool use_bias) {
       for (int s = 0; s < n->dof; ++s) compliant += n->gk[r][s] * (double)*n->rows.impulse[s];
       n->y[r] = cdot + bias * (double)n->rows.c[r] + compliant;
     }
+    return;
   }
-  for (int i = 0; i < t->body_nodes; ++i) {
-    tb_jt_node* n = &t->nodes[i];
-    n->y[0] = n->y[1] = n->y[2] = 0.0;
-    if (n->stiff == 0.0) continue;
-    /* the warm start turned the body by I^-1 tau with the plain inertia */
-    double torque = 0.0;
-    for (int e = 0; e < n->count; ++e) {
-      const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
-      bool side_a = joint->a == i;
-      for (int r = 0; r < joint->dof; ++r)
-        torque += side_a ? -(double)joint->rows.ja[r][2] * *joint->rows.impulse[r]
-                         : (double)joint->rows.jb[r][2] * *joint->rows.impulse[r];
-    }
-    n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
+  n->y[0] = n->y[1] = n->y[2] = 0.0;
+  if (n->stiff == 0.0) return;
+  /* the warm start turned the body by I^-1 tau with the plain inertia */
+  double torque = 0.0;
+  for (int e = 0; e < n->count; ++e) {
+    const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
+    bool side_a = joint->a == i;
+    for (int r = 0; r < joint->dof; ++r)
+      torque += side_a ? -(double)joint->rows.ja[r][2] * *joint->rows.impulse[r]
+                       : (double)joint->rows.jb[r][2] * *joint->rows.impulse[r];
   }
+  n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
+}
+
+/* Whether a later relax pass solves the tree order[from, to): when one of its
+ * bodies still moves (relax_activity.h). */
+static bool tree_active(const tb_step_context* ctx, const tb_joint_tree* t, int from, int to) {
+  for (int q = from; q < to; ++q)
+    if (t->order[q] < t->body_nodes && tb_relax_active(ctx, t->nodes[t->order[q]].ref)) return true;
+  return false;
+}
+
+/* One tree, order[from, to): the right-hand sides, the two substitutions
+ * through the factorisation, and the velocity changes and impulses. */
+static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool use_bias) {
+  tb_joint_tree* t = &w->joint_tree;
+  double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
+  for (int q = from; q < to; ++q) node_rhs(w, ctx, t->order[q], bias);
   /* forward, children first: y_p -= H_ip^T D_i^-1 y_i */
-  for (int q = t->node_count - 1; q >= 0; --q) {
+  for (int q = to - 1; q >= from; --q) {
     const tb_jt_node* n = &t->nodes[t->order[q]];
     if (n->parent < 0) continue;
     tb_jt_node* p = &t->nodes[n->parent];
@@ -387,7 +406,7 @@ static void substitute(tb_world* w, tb_step_context* ctx, bool use_bias) {
       for (int r = 0; r < n->dof; ++r) p->y[c] -= n->hp[r][c] * dy[r];
   }
   /* back, parents first: y becomes the solution */
-  for (int q = 0; q < t->node_count; ++q) {
+  for (int q = from; q < to; ++q) {
     tb_jt_node* n = &t->nodes[t->order[q]];
     double rhs[3] = {n->y[0], n->y[1], n->y[2]};
     if (n->parent >= 0) {
@@ -401,15 +420,18 @@ static void substitute(tb_world* w, tb_step_context* ctx, bool use_bias) {
     }
   }
   /* the velocity changes of the bodies and the impulses of the rows */
-  for (int i = 0; i < t->body_nodes; ++i) {
+  for (int q = from; q < to; ++q) {
+    int i = t->order[q];
     const tb_jt_node* n = &t->nodes[i];
+    if (i >= t->body_nodes) {
+      for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] += (float)n->y[r];
+      continue;
+    }
     tb_solver_body* s = &ctx->states[n->ref];
-    s->v = (tb_vec2){s->v.x + (float)n->y[0], s->v.y + (float)n->y[1]};
+    tb_vec2 dv = {(float)n->y[0], (float)n->y[1]};
+    s->v = (tb_vec2){s->v.x + dv.x, s->v.y + dv.y};
     s->w += (float)n->y[2];
-  }
-  for (int i = t->body_nodes; i < t->node_count; ++i) {
-    const tb_jt_node* n = &t->nodes[i];
-    for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] += (float)n->y[r];
+    if (!use_bias) tb_relax_note(ctx, n->ref, tb_relax_speed(ctx, n->ref, dv, (float)n->y[2]));
   }
 }
 
@@ -419,5 +441,8 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   /* the relax passes after one position update see the same rows */
   if (use_bias || t->factored_for != ctx->position_updates) factor(w, ctx, use_bias);
   t->factored_for = use_bias ? -1 : ctx->position_updates;
-  substitute(w, ctx, use_bias);
+  for (int k = 0; k < t->component_count; ++k) {
+    int from = t->components[k], to = t->components[k + 1];
+    if (use_bias || tree_active(ctx, t, from, to)) substitute(w, ctx, from, to, use_bias);
+  }
 }

@@ -21,6 +21,8 @@ typedef struct tb_joint_tree {
   int body_capacity;
   int* edges; /* per body node: its constraint nodes (CSR, first[] in body nodes) */
   int edge_capacity;
+  int* components; /* tree k is order[components[k], components[k + 1]) */
+  int component_count, component_capacity;
   tb_softness softness; /* of the biased pass */
   int factored_for;     /* the relax passes' factorisation is of this position update (-1: none) */
 } tb_joint_tree;

@@ -14,7 +14,9 @@
 #include <string.h>
 
 #include "contact.h"
+#include "joint.h"
 #include "math_internal.h"
+#include "relax_activity.h"
 #include "world.h"
 
 tb_softness tb_make_softness(float hertz, float zeta, float h) {
@@ -151,7 +153,9 @@ static bool collect_joints(tb_world* w) {
 static bool reserve_scratch(tb_world* w) {
   int n = w->awake_count + 1;
   return tb_array_reserve((void**)&w->states, &w->state_capacity, n, sizeof(tb_solver_body)) &&
-         tb_array_reserve(&w->motions, &w->motion_capacity, n, sizeof(tb_body_motion));
+         tb_array_reserve(&w->motions, &w->motion_capacity, n, sizeof(tb_body_motion)) &&
+         tb_array_reserve((void**)&w->changed_in, &w->changed_in_capacity, n + 1, sizeof(int32_t)) &&
+         tb_array_reserve((void**)&w->reach, &w->reach_capacity, n, sizeof(float));
 }
 
 /* Whether a body has a joint or a touching contact the solver handles. */
@@ -195,7 +199,6 @@ static bool has_constraints(const tb_world* w, int body) {
  * one substep. The default, h omega = 1.57 at 60 Hz and 4 substeps, is
  * below the cap and unchanged. */
 #define TB_JOINT_MAX_H_OMEGA 3.0f
-#define TB_RELAX_TOLERANCE 1e-5f /* m/s: 10 um in a second */
 
 /* Sweep direction. Gauss-Seidel in one fixed order favours the constraints
  * solved first, and the colour order runs across a structure in the order
@@ -207,11 +210,25 @@ static bool has_constraints(const tb_world* w, int body) {
  * structure needs fewer relax passes. */
 static bool sweep_backward(int substep, int pass) { return ((substep + pass) & 1) != 0; }
 
+/* A joint in a relax pass, when one of its bodies still moves (relax_activity.h). */
+static void relax_joint(tb_world* w, tb_step_context* ctx, int index) {
+  const tb_joint* j = tb_joint_at(w, index);
+  int a = j->solver_a, b = j->solver_b;
+  if (!tb_relax_active(ctx, a) && !tb_relax_active(ctx, b)) return;
+  tb_solver_body before_a = ctx->states[a], before_b = ctx->states[b];
+  tb_joint_solve(w, index, ctx, false);
+  const tb_solver_body *sa = &ctx->states[a], *sb = &ctx->states[b];
+  tb_relax_note(ctx, a, tb_relax_speed(ctx, a, tb_sub(sa->v, before_a.v), sa->w - before_a.w));
+  tb_relax_note(ctx, b, tb_relax_speed(ctx, b, tb_sub(sb->v, before_b.v), sb->w - before_b.w));
+}
+
 /* One relax pass (pass 0, 1, ... of this substep): joints, contacts, the
  * joint trees, all without position bias; returns the contacts' largest
  * normal speed change. */
 static float relax_pass(tb_world* w, tb_step_context* ctx, int substep, int pass) {
-  for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], ctx, false);
+  ctx->relax_pass += 1;
+  ctx->relax_all = pass == 0;
+  for (int k = 0; k < w->step_joint_count; ++k) relax_joint(w, ctx, w->step_joints[k]);
   float change = tb_contact_solver_solve(w, ctx, false, sweep_backward(substep, pass));
   tb_joint_tree_solve(w, ctx, false);
   return change;
@@ -243,6 +260,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.enable_warm_starting = w->enable_warm_starting;
   ctx.states = w->states;
   ctx.static_index = n;
+  ctx.changed_in = w->changed_in;
+  ctx.reach = w->reach;
 
   /* solver bodies and per-step motion terms */
   tb_body_motion* motions = (tb_body_motion*)w->motions;
@@ -256,6 +275,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     float omega = dynamic ? b->angular_velocity : tb_cap_angular_speed(b->angular_velocity, ctx.max_angular_speed);
     w->states[i] = (tb_solver_body){
         v, omega, dynamic ? b->inv_mass : 0.0f, dynamic ? b->inv_inertia : 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
+    w->changed_in[i] = 0;
+    w->reach[i] = b->max_extent;
     tb_body_motion* m = &motions[i];
     m->flags = b->joint_count > 0 ? MOTION_JOINTED : 0;
     m->turned = 0.0;
@@ -269,6 +290,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     }
   }
   w->states[n] = (tb_solver_body){{0.0f, 0.0f}, 0.0f, 0.0f, 0.0f, 0.0f, {0.0f, 0.0f}, {1.0f, 0.0f}};
+  w->changed_in[n] = w->changed_in[n + 1] = 0; /* the static dummy's, and the sink of writes to skip */
+  w->reach[n] = 0.0f;
 
   /* Midpoint and RK4 are for free flight: bodies without contacts or joints
    * this step use them; constrained bodies use the solver's symplectic Euler. */

@@ -63,6 +63,13 @@ typedef struct tb_step_context {
    * measured how far they slid along their contacts (cleared by that) */
   bool bodies_moved;
   int position_updates; /* counts the position updates of this step */
+  /* the relax passes' record of what still moves (relax_activity.h): per
+   * solver body the last relax pass that changed it, and its reach (the
+   * distance from its centre of mass to its farthest point) */
+  int32_t* changed_in;
+  const float* reach;
+  int relax_pass;  /* the current relax pass, counted from 1 over the step */
+  bool relax_all;  /* the first relax pass after a position update: everything is solved */
 } tb_step_context;
 
 /* The speed caps (tumble.h, maximum_linear_speed) hold for every moving body

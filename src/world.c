@@ -268,6 +268,8 @@ tb_result tb_destroy_world(tb_world_id id) {
   free(w->awake);
   free(w->states);
   free(w->motions);
+  free(w->changed_in);
+  free(w->reach);
   free(w->new_contact_bodies);
   free(w->step_contacts);
   free(w->constraints);

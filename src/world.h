@@ -60,6 +60,10 @@ typedef struct tb_world {
   int state_capacity;
   void* motions; /* per awake body: gravity, force and damping terms of the step (solver.c) */
   int motion_capacity;
+  int32_t* changed_in; /* per solver body: the relax pass that last moved it (relax_activity.h) */
+  int changed_in_capacity;
+  float* reach; /* per solver body: its max_extent */
+  int reach_capacity;
   int* new_contact_bodies; /* moving bodies with new contacts to sort into their lists (contact.c) */
   int new_contact_body_count, new_contact_capacity;
   int* step_contacts; /* touching contacts the solver handles this step */
