@@ -38,6 +38,7 @@
 
 #include "contact.h"
 #include "math_internal.h"
+#include "memory.h"
 #include "solver.h"
 #include "world.h"
 
@@ -1156,4 +1157,20 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
     }
     c->rolling_impulse = wc->rolling_impulse[lane];
   }
+}
+
+/* ---- memory ------------------------------------------------------------- */
+
+size_t tb_contact_solver_bytes(const tb_world* w) {
+  return (size_t)w->constraint_capacity * sizeof(tb_contact_constraint) +
+         (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->wide_capacity * sizeof(tb_wide_contact) +
+         (size_t)w->deep_capacity * sizeof(tb_deep_contact) + (size_t)w->push_capacity * sizeof *w->push_velocities;
+}
+
+void tb_contact_solver_free(tb_world* w) {
+  tb_mem_free(w->constraints, (size_t)w->constraint_capacity * sizeof(tb_contact_constraint));
+  tb_mem_free(w->color_lanes, (size_t)w->color_capacity * sizeof *w->color_lanes);
+  tb_mem_free(w->wide, (size_t)w->wide_capacity * sizeof(tb_wide_contact));
+  tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_contact));
+  tb_mem_free(w->push_velocities, (size_t)w->push_capacity * sizeof *w->push_velocities);
 }

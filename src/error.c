@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "memory.h"
 #include "world.h"
 
 static _Thread_local char last_message[TB_ERROR_MESSAGE_CAPACITY];
@@ -21,6 +22,7 @@ tb_result tb_fail(struct tb_world* world, tb_result r, const char* fmt, ...) {
   if (world != NULL) {
     memcpy(world->last_error, last_message, sizeof world->last_error);
   }
+  tb_log(last_message);
   return r;
 }
 

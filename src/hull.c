@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "memory.h"
 #include "error.h"
 #include "geometry.h"
 #include "math_internal.h"
@@ -61,7 +62,8 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
   }
 
   /* the points, then room for both chains (up to 2n entries) */
-  tb_vec2* pts = malloc((size_t)count * 3 * sizeof *pts);
+  const size_t bytes = (size_t)count * 3 * sizeof(tb_vec2);
+  tb_vec2* pts = tb_mem_alloc(bytes);
   if (pts == NULL) return tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_make_polygon: no memory for %d points", count);
   tb_vec2* hull = pts + count;
 
@@ -72,7 +74,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
     if (unique) pts[n++] = points[i];
   }
   if (n < 3) {
-    free(pts);
+    tb_mem_free(pts, bytes);
     return tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON,
                    "tb_make_polygon: only %d distinct points after welding points closer than %g m", n,
                    (double)TB_LINEAR_SLOP);
@@ -128,7 +130,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
                     why);
     }
   }
-  free(pts);
+  tb_mem_free(pts, bytes);
   return r;
 }
 

@@ -43,6 +43,7 @@
  * body whose mode is already stable (a pendulum: h^2 k / I ~ 1e-4) is solved
  * as before; the slowed turn would otherwise lengthen its period by that
  * fraction. The relax pass, which only removes the bias velocity, keeps I. */
+#include "memory.h"
 #include "joint_tree.h"
 
 #include <math.h>
@@ -77,10 +78,10 @@ typedef struct tb_jt_node {
 } tb_jt_node;
 
 void tb_joint_tree_free(tb_joint_tree* t) {
-  free(t->nodes);
-  free(t->order);
-  free(t->body_scratch);
-  free(t->edges);
+  tb_mem_free(t->nodes, (size_t)t->node_capacity * sizeof *t->nodes);
+  tb_mem_free(t->order, (size_t)t->order_capacity * sizeof *t->order);
+  tb_mem_free(t->body_scratch, (size_t)t->body_capacity * sizeof *t->body_scratch);
+  tb_mem_free(t->edges, (size_t)t->edge_capacity * sizeof *t->edges);
   memset(t, 0, sizeof *t);
 }
 
@@ -371,4 +372,9 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
     const tb_jt_node* n = &t->nodes[i];
     for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] += (float)n->y[r];
   }
+}
+
+size_t tb_joint_tree_bytes(const tb_joint_tree* t) {
+  return (size_t)t->node_capacity * sizeof *t->nodes + (size_t)t->order_capacity * sizeof *t->order +
+         (size_t)t->body_capacity * sizeof *t->body_scratch + (size_t)t->edge_capacity * sizeof *t->edges;
 }

@@ -15,6 +15,7 @@
 
 #include "contact.h"
 #include "math_internal.h"
+#include "memory.h"
 #include "world.h"
 
 tb_softness tb_make_softness(float hertz, float zeta, float h) {
@@ -367,4 +368,15 @@ int tb_solve(tb_world* w, float dt, int substeps) {
                                        fminf(0.5f * b->min_extent, TB_SPECULATIVE_DISTANCE);
   }
   return bad;
+}
+
+/* ---- memory ------------------------------------------------------------- */
+
+size_t tb_solver_bytes(const tb_world* w) {
+  return (size_t)w->state_capacity * sizeof *w->states + (size_t)w->motion_capacity * sizeof(tb_body_motion);
+}
+
+void tb_solver_free(tb_world* w) {
+  tb_mem_free(w->states, (size_t)w->state_capacity * sizeof *w->states);
+  tb_mem_free(w->motions, (size_t)w->motion_capacity * sizeof(tb_body_motion));
 }
