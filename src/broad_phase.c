@@ -7,11 +7,12 @@
 #include "math_internal.h"
 #include "memory.h"
 #include "world.h"
+#include "units.h"
 
 tb_result tb_broad_phase_init(tb_broad_phase* bp) {
   memset(bp, 0, sizeof *bp);
   for (int i = 0; i < 3; ++i) {
-    tb_result r = tb_tree_create(&bp->trees[i], TB_AABB_MARGIN);
+    tb_result r = tb_tree_create(&bp->trees[i], tb_units.aabb_margin);
     if (r != TB_OK) return r;
   }
   return TB_OK;

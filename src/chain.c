@@ -20,6 +20,7 @@
 #include "manifold.h"
 #include "math_internal.h"
 #include "world.h"
+#include "units.h"
 
 tb_chain_def tb_default_chain_def(void) {
   return (tb_chain_def){.friction = 0.6f, .filter = tb_default_filter(), .enable_sensor_events = true};
@@ -84,7 +85,8 @@ tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
       return null_id;
     }
     int j = i + 1 < n ? i + 1 : 0;
-    if ((j > 0 || def->is_loop) && tb_distance_sq(def->points[i], def->points[j]) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
+    if ((j > 0 || def->is_loop) &&
+        tb_distance_sq(def->points[i], def->points[j]) < tb_units.linear_slop * tb_units.linear_slop) {
       tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->points[%d] and [%d] are closer than TB_LINEAR_SLOP", fn, i, j);
       return null_id;
     }

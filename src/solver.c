@@ -17,6 +17,7 @@
 #include "math_internal.h"
 #include "memory.h"
 #include "world.h"
+#include "units.h"
 
 tb_softness tb_make_softness(float hertz, float zeta, float h) {
   if (hertz == 0.0f) return tb_rigid_softness();
@@ -196,7 +197,7 @@ static bool has_constraints(const tb_world* w, int body) {
  * one substep. The default, h omega = 1.57 at 60 Hz and 4 substeps, is
  * below the cap and unchanged. */
 #define TB_JOINT_MAX_H_OMEGA 3.0f
-#define TB_RELAX_TOLERANCE 1e-5f /* m/s: 10 um in a second */
+#define TB_RELAX_TOLERANCE tb_meters(1e-5f) /* m/s: 10 um in a second */
 
 /* Sweep direction. Gauss-Seidel in one fixed order favours the constraints
  * solved first, and the colour order runs across a structure in the order
@@ -365,7 +366,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
      * would sink into static geometry before the contact catches them */
     if (w->enable_continuous && b->type == TB_DYNAMIC_BODY)
       b->is_fast = b->is_bullet || tb_length(moved) + b->max_extent * fabsf(turned) >
-                                       fminf(0.5f * b->min_extent, TB_SPECULATIVE_DISTANCE);
+                                       fminf(0.5f * b->min_extent, tb_units.speculative_distance);
   }
   return bad;
 }

@@ -8,6 +8,7 @@
 #include "math_internal.h"
 #include "memory.h"
 #include "timer.h"
+#include "units.h"
 
 /* Worlds live in a fixed table so that a world handle can be checked without
  * touching freed memory. A slot's generation counts the worlds it held; one
@@ -28,17 +29,18 @@ static tb_pool* handle_pool(tb_world* w, int which) {
 }
 
 tb_world_def tb_default_world_def(void) {
-  return (tb_world_def){.gravity = {0.0f, -10.0f},
+  /* lengths and speeds in the length units (tb_set_length_units_per_meter) */
+  return (tb_world_def){.gravity = {0.0f, tb_meters(-10.0f)},
                         .integrator = TB_INTEGRATOR_MIDPOINT,
-                        .hit_event_threshold = 1.0f,
+                        .hit_event_threshold = tb_meters(1.0f),
                         .contact_hertz = 120.0f,
                         .contact_damping_ratio = 10.0f,
-                        .contact_push_max_velocity = 3.0f,
+                        .contact_push_max_velocity = tb_meters(3.0f),
                         .relax_iterations = 8,
                         .joint_hertz = 60.0f,
                         .joint_damping_ratio = 2.0f,
-                        .restitution_threshold = 1.0f,
-                        .maximum_linear_speed = 1000.0f,
+                        .restitution_threshold = tb_meters(1.0f),
+                        .maximum_linear_speed = tb_meters(1000.0f),
                         .enable_sleep = true,
                         .enable_continuous = true,
                         .enable_warm_starting = true};
@@ -71,9 +73,9 @@ static tb_result check_relax_iterations(tb_world* w, const char* fn, const char*
 }
 
 static tb_result check_maximum_linear_speed(tb_world* w, const char* fn, const char* name, float speed) {
-  if (!(speed > 0.0f && speed <= TB_MAX_SPEED)) /* NaN fails too */
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and at most TB_MAX_SPEED (%g m/s)", fn, name,
-                   (double)speed, (double)TB_MAX_SPEED);
+  if (!(speed > 0.0f && speed <= tb_units.max_speed)) /* NaN fails too */
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and at most TB_MAX_SPEED (%g units/s)", fn,
+                   name, (double)speed, (double)tb_units.max_speed);
   return TB_OK;
 }
 
