@@ -4,6 +4,8 @@
  *
  * Conventions
  * - Units: metres, kilograms, seconds, radians. Tuned for objects of 0.05 to 50 m.
+ *   Games in other length units (pixels) set tb_set_length_units_per_meter
+ *   first; the metre values below then scale (see "memory, hooks and units").
  * - Mass ratios: supported up to 1e3:1 between bodies that touch or are jointed
  *   (60 Hz, 4 substeps). Contacts are springs of contact_hertz, so a light body
  *   under a heavy one sinks by the load over its spring: a 1 kg box under 1 t sinks
@@ -133,7 +135,8 @@ typedef void* tb_alloc_fn(size_t size, size_t alignment, void* context);
  * with (so a game's allocator needs no header). Never called with NULL. */
 typedef void tb_free_fn(void* memory, size_t size, void* context);
 
-/* The library's own: aligned_alloc and free. */
+/* The library's own: malloc (aligned_alloc where malloc aligns less than
+ * the alignment asked for) and free. */
 void* tb_default_alloc(size_t size, size_t alignment, void* context);
 void tb_default_free(void* memory, size_t size, void* context);
 
