@@ -1437,6 +1437,74 @@ static tb_result command(model* m, fuzz_input* in, int* stepped, float* step_dt)
   }
 }
 
+/* ---- memory: a counting allocator, set once while no world exists -------- */
+
+/* Each block carries its size in a header of one alignment unit, so the free
+ * hook can check the size tumble passes back. */
+typedef struct fuzz_counter {
+  size_t live_bytes;
+  bool installed;
+} fuzz_counter;
+static fuzz_counter counter;
+
+static void* counting_alloc(size_t size, size_t alignment, void* context) {
+  FUZZ_CHECK(context == &counter && size > 0 && alignment >= TB_ALLOCATION_ALIGNMENT, "alloc(%zu, %zu)", size,
+             alignment);
+  unsigned char* block = tb_default_alloc(size + TB_ALLOCATION_ALIGNMENT, alignment, NULL);
+  if (block == NULL) return NULL;
+  memcpy(block, &size, sizeof size);
+  counter.live_bytes += size;
+  return block + TB_ALLOCATION_ALIGNMENT;
+}
+
+static void counting_free(void* memory, size_t size, void* context) {
+  unsigned char* block = (unsigned char*)memory - TB_ALLOCATION_ALIGNMENT;
+  size_t allocated;
+  memcpy(&allocated, block, sizeof allocated);
+  FUZZ_CHECK(context == &counter && allocated == size, "free told %zu bytes, allocated %zu", size, allocated);
+  counter.live_bytes -= size;
+  tb_default_free(block, size + TB_ALLOCATION_ALIGNMENT, NULL);
+}
+
+/* Between inputs (no world exists): the global setters take effect, and
+ * tumble holds only what it keeps between worlds. */
+static void check_memory_between_inputs(void) {
+  if (!counter.installed) {
+    FUZZ_CHECK(tb_set_allocator(counting_alloc, counting_free, &counter) == TB_OK, "%s", tb_last_error());
+    counter.installed = true;
+  }
+  FUZZ_CHECK(tb_set_length_units_per_meter(1.0f) == TB_OK && tb_set_log_function(NULL, NULL) == TB_OK &&
+                 tb_set_assert_function(NULL, NULL) == TB_OK,
+             "a global setter refused while no world exists: %s", tb_last_error());
+  FUZZ_CHECK(counter.live_bytes == tb_get_retained_byte_count(), "%zu bytes live, %zu retained between worlds",
+             counter.live_bytes, tb_get_retained_byte_count());
+}
+
+/* While worlds exist: each world's parts add up to its byte count, the
+ * worlds and the kept history are every byte the allocator holds, and the
+ * global setters are refused. */
+static void check_memory(const model* m) {
+  size_t held = tb_get_retained_byte_count();
+  int alive = 0;
+  for (int k = 0; k < MAX_WORLDS; ++k) {
+    if (!m->worlds[k].alive) continue;
+    alive += 1;
+    tb_memory_stats s;
+    FUZZ_CHECK(tb_world_get_memory_stats(m->worlds[k].id, &s) == TB_OK, "%s", tb_last_error());
+    FUZZ_CHECK(s.world + s.bodies + s.shapes + s.contacts + s.joints + s.broad_phase + s.islands + s.solver + s.events +
+                       s.handle_history ==
+                   s.total,
+               "memory parts do not add up to %zu", s.total);
+    FUZZ_CHECK(tb_world_get_byte_count(m->worlds[k].id) == s.total, "byte count");
+    held += s.total;
+  }
+  FUZZ_CHECK(held == counter.live_bytes, "the worlds hold %zu bytes, the allocator %zu", held, counter.live_bytes);
+  FUZZ_CHECK(tb_set_length_units_per_meter(1.0f) == (alive > 0 ? TB_ERR_LOCKED : TB_OK) &&
+                 tb_get_length_units_per_meter() == 1.0f,
+             "units refused or changed wrongly (%d worlds)", alive);
+  tb_clear_error();
+}
+
 static void check_invariants(const model* m) {
   for (int k = 0; k < MAX_WORLDS; ++k) {
     const world_model* wm = &m->worlds[k];
@@ -1522,6 +1590,7 @@ static uint64_t run(model* m, const uint8_t* data, size_t size, bool check) {
       }
       if (stepped >= 0) check_step(&m->worlds[stepped], dt, r);
       check_invariants(m);
+      check_memory(m);
     }
     memcpy(before, after, sizeof before);
   }
@@ -1535,6 +1604,7 @@ static void destroy_worlds(model* m) {
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static model first, second; /* large: not on the stack */
+  check_memory_between_inputs();
   uint64_t t1 = run(&first, data, size, true);
   /* The replay: the first run's worlds, and a dummy world when fewer than two
    * are left, still hold the lowest slots (tb_create_world takes the lowest

@@ -4,6 +4,8 @@
  *
  * Conventions
  * - Units: metres, kilograms, seconds, radians. Tuned for objects of 0.05 to 50 m.
+ *   Games in other length units (pixels) set tb_set_length_units_per_meter
+ *   first; the metre values below then scale (see "memory, hooks and units").
  * - Mass ratios: supported up to 1e3:1 between bodies that touch or are jointed
  *   (60 Hz, 4 substeps). Contacts are springs of contact_hertz, so a light body
  *   under a heavy one sinks by the load over its spring: a 1 kg box under 1 t sinks
@@ -36,6 +38,7 @@
 #define TUMBLE_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
@@ -110,6 +113,113 @@ const char* tb_last_error(void);
 tb_result tb_last_result(void);
 /* Forget the last error of this thread. */
 void tb_clear_error(void);
+
+/* -------------------------------------------- memory, hooks and units -- */
+
+/* Global settings, shared by all worlds. Each setter may be called only while
+ * no world exists (before the first tb_create_world, or after the last
+ * tb_destroy_world); while one does it is refused with TB_ERR_LOCKED and
+ * nothing changes. So a world never sees them change, and threads that step
+ * their own worlds only ever read them. Like the rest of the library, the
+ * setters are not thread-safe: call them from one thread while no other
+ * thread is inside tumble. */
+
+/* Every block tumble allocates is requested with this alignment (bytes; the
+ * solver keeps 16-byte vectors in its blocks). */
+#define TB_ALLOCATION_ALIGNMENT 16
+
+/* Allocates size (> 0) bytes aligned to alignment (a power of two, at least
+ * TB_ALLOCATION_ALIGNMENT); returns NULL when out of memory. */
+typedef void* tb_alloc_fn(size_t size, size_t alignment, void* context);
+/* Frees a block from the alloc function; size is the size it was allocated
+ * with (so a game's allocator needs no header). Never called with NULL. */
+typedef void tb_free_fn(void* memory, size_t size, void* context);
+
+/* The library's own: malloc (aligned_alloc where malloc aligns less than
+ * the alignment asked for) and free. */
+void* tb_default_alloc(size_t size, size_t alignment, void* context);
+void tb_default_free(void* memory, size_t size, void* context);
+
+/* Routes every allocation of tumble through alloc and free, with context.
+ * Both are required (pass tb_default_alloc and tb_default_free to go back).
+ * Only while no world exists (else TB_ERR_LOCKED). What tumble keeps between
+ * worlds (see tb_get_retained_byte_count) moves to the new allocator: it is
+ * copied into blocks from alloc and its old blocks go back to the old free
+ * function, so each allocator frees only its own blocks; TB_ERR_OUT_OF_MEMORY
+ * (nothing changed) when the copy cannot be allocated.
+ * When alloc returns NULL, the call that needed the memory fails cleanly: a
+ * creator returns the null handle with TB_ERR_OUT_OF_MEMORY and the world is
+ * as before; tb_world_step returns TB_ERR_OUT_OF_MEMORY and leaves a
+ * consistent world in which what could not be allocated was skipped (a new
+ * contact is found again on a later step, an event is dropped, or the whole
+ * solve waits for the next step). */
+tb_result tb_set_allocator(tb_alloc_fn* alloc, tb_free_fn* free, void* context);
+
+/* Receives each message tumble records in tb_last_error() (a rejected call,
+ * an out-of-memory step, a contained numeric problem), and the message of a
+ * failed internal-consistency check before the assert function runs. It must
+ * not call back into tumble. */
+typedef void tb_log_fn(const char* message, void* context);
+/* Sets the log function; NULL (the default) logs nothing. Only while no world
+ * exists (else TB_ERR_LOCKED). */
+tb_result tb_set_log_function(tb_log_fn* log, void* context);
+
+/* Called when tumble finds its own state inconsistent (a bug in tumble, never
+ * a bad argument: those are errors). After it returns tumble calls abort():
+ * the state cannot be trusted any more; a game may stop in a debugger or
+ * write a crash report first. */
+typedef void tb_assert_fn(const char* condition, const char* file, int line, void* context);
+/* Sets the assert function; NULL (the default) writes the message to stderr
+ * when no log function is set. Only while no world exists (else
+ * TB_ERR_LOCKED). */
+tb_result tb_set_assert_function(tb_assert_fn* assert_fn, void* context);
+
+/* Bytes tumble holds outside any world (from the allocator's point of view):
+ * the handle history of world slots, 2 bytes per body, shape, chain and
+ * joint slot the slot's earlier worlds used (see tb_create_world). */
+size_t tb_get_retained_byte_count(void);
+
+/* Bytes a world holds, by part, from the allocator's point of view: the sums of
+ * the sizes of its live blocks. Blocks grow and are kept (no allocation in a
+ * steady step), so these are capacities, not what is in use. */
+typedef struct tb_memory_stats {
+  size_t world;       /* the world's own record */
+  size_t bodies;      /* the body pool and the awake set */
+  size_t shapes;      /* the shape pool, and chains: their pool and segment lists */
+  size_t contacts;    /* the contact pool and the pair set */
+  size_t joints;      /* the joint pool */
+  size_t broad_phase; /* the three bounding-volume trees and the move buffer */
+  size_t islands;     /* sleeping islands */
+  size_t solver;      /* step scratch: solver bodies, constraints, colours, joint trees */
+  size_t events;      /* contact and sensor event arrays */
+  /* generations that earlier worlds in this world slot left, so that no
+   * handle is handed out twice (tb_create_world) */
+  size_t handle_history;
+  size_t total; /* the sum of the parts; tb_world_get_byte_count */
+} tb_memory_stats;
+
+/* tb_world_get_byte_count and tb_world_get_memory_stats are in the world
+ * section (they take a world handle). */
+
+/* Length units per metre, for games that work in other units (e.g. 100 for
+ * pixels at 100 px/m), default 1: finite and in [1e-3, 1e3] (else
+ * TB_ERR_INVALID_ARGUMENT). Only while no world exists (else TB_ERR_LOCKED).
+ * Every length tolerance inside tumble is in these units: TB_LINEAR_SLOP (the
+ * hull weld distance, the shortest segment, capsule and joint length),
+ * TB_SPECULATIVE_DISTANCE, the broad phase's AABB margin, the continuous
+ * pass's target gap, the cast tolerance, and so are the defaults and limits
+ * that are lengths, speeds or accelerations: the world's gravity
+ * ((0, -10) x units), maximum_linear_speed, hit_event_threshold,
+ * restitution_threshold, contact_push_max_velocity, TB_MAX_SPEED and
+ * TB_MAX_GRAVITY, a body's sleep_threshold, a distance joint's length, the
+ * debug draw's normal_length. The macros keep their values in metres:
+ * multiply them by tb_get_length_units_per_meter(). TB_MAX_LENGTH stays as it
+ * is (it is where a float stops resolving the slop at 1 unit = 1 m; larger
+ * units per metre make the world smaller in metres, not in units).
+ * tb_default_*_def() read the setting when called: set it first. A power of
+ * two gives bit for bit the same motion as metres, scaled. */
+tb_result tb_set_length_units_per_meter(float units_per_meter);
+float tb_get_length_units_per_meter(void);
 
 /* ------------------------------------------------------------------ math -- */
 
@@ -377,6 +487,13 @@ typedef struct tb_profile {
 } tb_profile;
 
 tb_profile tb_world_get_profile(tb_world_id world);
+
+/* The bytes the world holds, from the allocator's point of view (0 on error:
+ * a null or stale handle); tb_memory_stats.total. */
+size_t tb_world_get_byte_count(tb_world_id world);
+/* Fills *stats with the world's bytes by part (tb_memory_stats; zeroed on
+ * error). Errors: NULL stats, a null or stale world. */
+tb_result tb_world_get_memory_stats(tb_world_id world, tb_memory_stats* stats);
 
 /* A 64-bit hash of the whole world: everything a public call can change and
  * everything a step carries over to the next. That is the world's settings

@@ -6,6 +6,7 @@
 #include "geometry.h"
 #include "math_internal.h"
 #include "world.h"
+#include "units.h"
 
 /* Resolve a body handle or return `fallback` from the calling function. */
 #define GET_BODY(id, fallback)                  \
@@ -26,7 +27,7 @@ tb_body_def tb_default_body_def(void) {
                        .enabled = true,
                        .enable_sleep = true,
                        .is_awake = true,
-                       .sleep_threshold = 0.05f};
+                       .sleep_threshold = tb_meters(0.05f)};
 }
 
 void tb_body_sync_transform(tb_body* b) {
@@ -37,8 +38,9 @@ void tb_body_sync_transform(tb_body* b) {
 tb_vec2 tb_body_gravity(const tb_world* w, const tb_body* b) {
   tb_vec2 g = tb_scale(b->gravity_scale, w->gravity);
   float length = tb_length(g); /* inf when the product overflows: then the clamp keeps g's direction */
-  if (length <= TB_MAX_GRAVITY) return g;
-  float scale = b->gravity_scale < 0.0f ? -TB_MAX_GRAVITY : TB_MAX_GRAVITY;
+  const float max_gravity = tb_units.max_gravity;
+  if (length <= max_gravity) return g;
+  float scale = b->gravity_scale < 0.0f ? -max_gravity : max_gravity;
   return tb_scale(scale, tb_normalize(w->gravity));
 }
 
@@ -80,7 +82,7 @@ static void update_extents(tb_world* w, tb_body* b) {
   float max_extent = 0.0f, min_extent = TB_MAX_LENGTH;
   for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
     const tb_shape* s = tb_shape_at(w, i);
-    float far = 0.0f, thin = TB_LINEAR_SLOP;
+    float far = 0.0f, thin = tb_units.linear_slop;
     switch (s->type) {
       case TB_SHAPE_CIRCLE:
         far = tb_length(tb_sub(s->geom.circle.center, b->local_center)) + s->geom.circle.radius;

@@ -1,17 +1,18 @@
 /* Broad phase: trees per body type, the move buffer and the pair set. */
 #include "broad_phase.h"
 
-#include <stdlib.h>
 #include <string.h>
 
 #include "geometry.h"
 #include "math_internal.h"
+#include "memory.h"
 #include "world.h"
+#include "units.h"
 
 tb_result tb_broad_phase_init(tb_broad_phase* bp) {
   memset(bp, 0, sizeof *bp);
   for (int i = 0; i < 3; ++i) {
-    tb_result r = tb_tree_create(&bp->trees[i], TB_AABB_MARGIN);
+    tb_result r = tb_tree_create(&bp->trees[i], tb_units.aabb_margin);
     if (r != TB_OK) return r;
   }
   return TB_OK;
@@ -19,10 +20,20 @@ tb_result tb_broad_phase_init(tb_broad_phase* bp) {
 
 void tb_broad_phase_free(tb_broad_phase* bp) {
   for (int i = 0; i < 3; ++i) tb_tree_destroy(&bp->trees[i]);
-  free(bp->move_buffer);
-  free(bp->pair_keys);
-  free(bp->pair_contacts);
+  tb_mem_free(bp->move_buffer, (size_t)bp->move_capacity * sizeof *bp->move_buffer);
+  tb_mem_free(bp->pair_keys, (size_t)bp->pair_capacity * sizeof *bp->pair_keys);
+  tb_mem_free(bp->pair_contacts, (size_t)bp->pair_capacity * sizeof *bp->pair_contacts);
   memset(bp, 0, sizeof *bp);
+}
+
+size_t tb_broad_phase_tree_bytes(const tb_broad_phase* bp) {
+  size_t bytes = (size_t)bp->move_capacity * sizeof *bp->move_buffer;
+  for (int i = 0; i < 3; ++i) bytes += tb_tree_bytes(&bp->trees[i]);
+  return bytes;
+}
+
+size_t tb_broad_phase_pair_bytes(const tb_broad_phase* bp) {
+  return (size_t)bp->pair_capacity * (sizeof *bp->pair_keys + sizeof *bp->pair_contacts);
 }
 
 bool tb_filters_collide(tb_filter a, tb_filter b) {
@@ -57,13 +68,13 @@ int tb_pair_find(const tb_broad_phase* bp, int a, int b) {
 }
 
 static bool pair_rehash(tb_broad_phase* bp, int capacity) {
-  uint64_t* keys = calloc((size_t)capacity, sizeof *keys);
-  int32_t* contacts = malloc((size_t)capacity * sizeof *contacts);
-  if (keys == NULL || contacts == NULL) {
-    free(keys);
-    free(contacts);
+  uint64_t* keys = tb_mem_alloc((size_t)capacity * sizeof *keys);
+  int32_t* contacts = keys != NULL ? tb_mem_alloc((size_t)capacity * sizeof *contacts) : NULL;
+  if (contacts == NULL) {
+    tb_mem_free(keys, (size_t)capacity * sizeof *keys);
     return false;
   }
+  memset(keys, 0, (size_t)capacity * sizeof *keys);
   uint32_t mask = (uint32_t)capacity - 1;
   for (int i = 0; i < bp->pair_capacity; ++i) {
     uint64_t key = bp->pair_keys[i];
@@ -73,8 +84,8 @@ static bool pair_rehash(tb_broad_phase* bp, int capacity) {
     keys[j] = key;
     contacts[j] = bp->pair_contacts[i];
   }
-  free(bp->pair_keys);
-  free(bp->pair_contacts);
+  tb_mem_free(bp->pair_keys, (size_t)bp->pair_capacity * sizeof *bp->pair_keys);
+  tb_mem_free(bp->pair_contacts, (size_t)bp->pair_capacity * sizeof *bp->pair_contacts);
   bp->pair_keys = keys;
   bp->pair_contacts = contacts;
   bp->pair_capacity = capacity;

@@ -26,6 +26,9 @@ struct tb_world;
 
 tb_result tb_broad_phase_init(tb_broad_phase* bp);
 void tb_broad_phase_free(tb_broad_phase* bp);
+/* Bytes held: the trees and the move buffer; the pair set. */
+size_t tb_broad_phase_tree_bytes(const tb_broad_phase* bp);
+size_t tb_broad_phase_pair_bytes(const tb_broad_phase* bp);
 /* Proxies follow their shapes: create (and queue for pair finding), destroy,
  * and move (queued again only when re-inserted). false when out of memory. */
 bool tb_broad_phase_create_proxy(struct tb_world* w, int shape);

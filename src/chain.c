@@ -10,6 +10,7 @@
  *   box sliding over the joint never meets a tilted normal and does not catch);
  *   at a convex joint the region is shared, and the segment whose face normal
  *   is closer to the contact normal keeps it, so exactly one reports it. */
+#include "memory.h"
 #include "chain.h"
 
 #include <float.h>
@@ -19,6 +20,7 @@
 #include "manifold.h"
 #include "math_internal.h"
 #include "world.h"
+#include "units.h"
 
 tb_chain_def tb_default_chain_def(void) {
   return (tb_chain_def){.friction = 0.6f, .filter = tb_default_filter(), .enable_sensor_events = true};
@@ -31,7 +33,8 @@ static tb_chain_id make_chain_id(const tb_world* w, int index) {
 }
 
 static void free_chain(tb_world* w, int index) {
-  free(chain_at(w, index)->shapes);
+  tb_chain* c = chain_at(w, index);
+  tb_mem_free(c->shapes, (size_t)c->count * sizeof *c->shapes);
   tb_pool_release(&w->chains, index);
 }
 
@@ -82,7 +85,8 @@ tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
       return null_id;
     }
     int j = i + 1 < n ? i + 1 : 0;
-    if ((j > 0 || def->is_loop) && tb_distance_sq(def->points[i], def->points[j]) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
+    if ((j > 0 || def->is_loop) &&
+        tb_distance_sq(def->points[i], def->points[j]) < tb_units.linear_slop * tb_units.linear_slop) {
       tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->points[%d] and [%d] are closer than TB_LINEAR_SLOP", fn, i, j);
       return null_id;
     }
@@ -94,12 +98,12 @@ tb_chain_id tb_create_chain(tb_body_id body_id, const tb_chain_def* def) {
     if (tb_shape_prepare(w, body, &proto, segments, fn) != TB_OK) return null_id;
   }
   int index = tb_pool_alloc(&w->chains);
-  int* shapes = index >= 0 ? malloc((size_t)segments * sizeof *shapes) : NULL;
+  int* shapes = index >= 0 ? tb_mem_alloc((size_t)segments * sizeof *shapes) : NULL;
   int allocated = 0;
   while (shapes != NULL && allocated < segments && (shapes[allocated] = tb_pool_alloc(&w->shapes)) >= 0) allocated += 1;
   if (allocated < segments) {
     while (allocated > 0) tb_pool_release(&w->shapes, shapes[--allocated]);
-    free(shapes);
+    tb_mem_free(shapes, (size_t)segments * sizeof *shapes);
     if (index >= 0) tb_pool_release(&w->chains, index);
     tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for %d segments", fn, segments);
     return null_id;
@@ -160,7 +164,17 @@ void tb_chains_destroy_of_body(tb_world* w, int body) {
 
 void tb_chains_free(tb_world* w) {
   for (int i = 0; i < w->chains.high; ++i)
-    if (tb_pool_alive(&w->chains, i)) free(chain_at(w, i)->shapes);
+    if (tb_pool_alive(&w->chains, i)) {
+      tb_chain* c = chain_at(w, i);
+      tb_mem_free(c->shapes, (size_t)c->count * sizeof *c->shapes);
+    }
+}
+
+size_t tb_chains_bytes(const tb_world* w) {
+  size_t bytes = 0;
+  for (int i = 0; i < w->chains.high; ++i)
+    if (tb_pool_alive(&w->chains, i)) bytes += (size_t)chain_at(w, i)->count * sizeof *chain_at(w, i)->shapes;
+  return bytes;
 }
 
 /* ---- manifolds ---------------------------------------------------------- */

@@ -11,6 +11,7 @@
 #include "manifold.h"
 #include "math_internal.h"
 #include "world.h"
+#include "units.h"
 
 /* ---- manifold dispatch ----------------------------------------------------
  * One function per unordered pair of types, with the shape that comes first
@@ -401,7 +402,7 @@ static void carry_impulses(const tb_manifold* old, tb_manifold* m) {
   for (int i = 0; i < m->point_count; ++i)
     for (int k = 0; k < old->point_count && !found[i]; ++k) {
       tb_vec2 d = tb_sub(old->points[k].point, m->points[i].point);
-      if (!taken[k] && tb_dot(d, d) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
+      if (!taken[k] && tb_dot(d, d) < tb_units.linear_slop * tb_units.linear_slop) {
         inherit(&m->points[i], &old->points[k]);
         taken[k] = found[i] = true;
       }
@@ -450,7 +451,7 @@ static __attribute__((noinline)) bool face_runs_on(const tb_world* w, const tb_c
   /* the incident shape: B's when A's face is the reference */
   bool b_incident = tb_dot(normal, c->manifold.normal) > 0.0f;
   const tb_shape* incident = tb_shape_at(w, b_incident ? c->shape_b : c->shape_a);
-  const float e = TB_LINEAR_SLOP;
+  const float e = tb_units.linear_slop;
   cover_query q = {w,
                    c,
                    incident,

@@ -38,9 +38,11 @@
 
 #include "contact.h"
 #include "math_internal.h"
+#include "memory.h"
 #include "relax_activity.h"
 #include "solver.h"
 #include "world.h"
+#include "units.h"
 
 #if !defined(__GNUC__)
 #error "tumble's contact solver needs GCC-style vector extensions (GCC or Clang)"
@@ -62,7 +64,7 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
  * must reach through the pile: with 4 per substep the pile stayed 0.4 m deep
  * after 3 s, with 16 it separates. Ordinary scenes have no deep contacts and
  * never sweep. */
-#define TB_DEEP_OVERLAP (0.5f * TB_LINEAR_SLOP)
+#define TB_DEEP_OVERLAP (0.5f * tb_units.linear_slop)
 #define TB_PUSH_OUT_RATE 0.2f /* share of the excess depth removed per substep */
 #define TB_PUSH_OUT_SWEEPS 16
 
@@ -313,7 +315,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
    * where the face runs on into another shape: the contact decides. */
   tb_f4 speed = (fabs4(B.vx - A.vx) + fabs4(B.vy - A.vy)) +
                 (fabs4(A.w) * LANES(ba, max_extent) + fabs4(B.w) * LANES(bb, max_extent));
-  tb_f4 reach = speed * splat(ctx->dt) + splat(TB_LINEAR_SLOP);
+  tb_f4 reach = speed * splat(ctx->dt) + splat(tb_units.linear_slop);
   tb_i4 near_end = (LANES(c, patch.slide_max) < reach) | (LANES(c, patch.slide_min) > -reach);
   for (int lane = 0; lane < 4; ++lane)
     if (near_end[lane] && k[lane] >= 0)
@@ -719,7 +721,7 @@ static inline __attribute__((always_inline)) tb_f4 normal_motion(const tb_wide_c
  * resting ball's jitter on another ball changes its gap by x^2 / 2R, far
  * below float rounding, and a face point goes on for at most that much of
  * slide (0.17 ms at 3 m/s). */
-#define TB_SLIDE_TOLERANCE (0.1f * TB_LINEAR_SLOP)
+#define TB_SLIDE_TOLERANCE (0.1f * tb_units.linear_slop)
 
 /* the base separations of a block with a lane past its patch, or that had one */
 static __attribute__((noinline)) void set_slide_gaps(tb_wide_contact* c, const wide_body* A, const wide_body* B,
@@ -972,7 +974,7 @@ void tb_contact_solver_warm_start(tb_world* w, tb_step_context* ctx) {
  * overshoot where the arms grew; the masses of arms that moved less are off
  * by under 2 TB_ARM_MASS_SHIFT / r, 4% for 5 cm arms, which the passes
  * absorb, and a resting structure does not pay for them). */
-#define TB_ARM_MASS_SHIFT (0.2f * TB_LINEAR_SLOP)
+#define TB_ARM_MASS_SHIFT (0.2f * tb_units.linear_slop)
 void tb_contact_solver_update_arms(tb_world* w, tb_step_context* ctx) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   const tb_f4 zero = splat(0.0f);
@@ -1063,7 +1065,7 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
 }
 
 #define TB_RESTITUTION_PASSES 16
-#define TB_RESTITUTION_TOLERANCE 1e-5f /* m/s, as the relax passes' stop */
+#define TB_RESTITUTION_TOLERANCE tb_meters(1e-5f) /* m/s, as the relax passes' stop */
 
 /* K = J M^-1 J^T of a point's normal impulse at arms ra, rb */
 static float normal_k(const tb_wide_contact* wc, int lane, tb_vec2 ra, tb_vec2 rb) {
@@ -1199,4 +1201,20 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
     }
     c->rolling_impulse = wc->rolling_impulse[lane];
   }
+}
+
+/* ---- memory ------------------------------------------------------------- */
+
+size_t tb_contact_solver_bytes(const tb_world* w) {
+  return (size_t)w->constraint_capacity * sizeof(tb_contact_constraint) +
+         (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->wide_capacity * sizeof(tb_wide_contact) +
+         (size_t)w->deep_capacity * sizeof(tb_deep_contact) + (size_t)w->push_capacity * sizeof *w->push_velocities;
+}
+
+void tb_contact_solver_free(tb_world* w) {
+  tb_mem_free(w->constraints, (size_t)w->constraint_capacity * sizeof(tb_contact_constraint));
+  tb_mem_free(w->color_lanes, (size_t)w->color_capacity * sizeof *w->color_lanes);
+  tb_mem_free(w->wide, (size_t)w->wide_capacity * sizeof(tb_wide_contact));
+  tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_contact));
+  tb_mem_free(w->push_velocities, (size_t)w->push_capacity * sizeof *w->push_velocities);
 }

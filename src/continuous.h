@@ -4,13 +4,14 @@
 #define TB_CONTINUOUS_H
 
 #include "tumble.h"
+#include "units.h"
 
 struct tb_world;
 
-/* Gap between the surfaces (m) at which a swept body is stopped. */
-#define TB_TOI_TARGET TB_LINEAR_SLOP
+/* Gap between the surfaces (length units) at which a swept body is stopped. */
+#define TB_TOI_TARGET tb_units.linear_slop
 /* Accepted error of that gap: the body stops with a gap of target +- this. */
-#define TB_TOI_TOLERANCE (0.25f * TB_LINEAR_SLOP)
+#define TB_TOI_TOLERANCE (0.25f * tb_units.linear_slop)
 
 /* Called by the step after the solver has moved every awake body from
  * (center0, angle0) to (center, angle) and before the shapes' proxies follow.

@@ -6,6 +6,7 @@
 
 #include "math_internal.h"
 #include "world.h"
+#include "units.h"
 
 static tb_color rgb(float r, float g, float b) { return (tb_color){r, g, b, 1.0f}; }
 
@@ -13,7 +14,7 @@ tb_debug_draw tb_default_debug_draw(void) {
   tb_debug_draw d = {0};
   d.draw_shapes = true;
   d.draw_joints = true;
-  d.normal_length = 0.3f;
+  d.normal_length = tb_meters(0.3f);
   d.point_size = 5.0f;
   /* Hues far apart so that each state reads at a glance, also when shrunk. */
   d.colors = (tb_debug_colors){

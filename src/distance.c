@@ -14,6 +14,7 @@
 #include "error.h"
 #include "geometry.h"
 #include "math_internal.h"
+#include "units.h"
 
 #define GJK_MAX_ITERATIONS 32
 #define CAST_MAX_ITERATIONS 50
@@ -548,7 +549,7 @@ tb_result tb_shape_cast(const tb_shape_cast_input* input, tb_cast_output* output
   points_in_frame_of(input->xf_a, input->xf_b, b, pb);
   tb_vec2 r = tb_inv_rotate(input->xf_a.q, input->translation_b);
   const float radius = a->radius + b->radius;
-  const float tol = TB_CAST_TOLERANCE;
+  const float tol = tb_meters(TB_CAST_TOLERANCE);
 
   simplex s;
   s.count = 0;

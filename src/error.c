@@ -5,7 +5,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "memory.h"
 #include "world.h"
+#include "units.h"
 
 static _Thread_local char last_message[TB_ERROR_MESSAGE_CAPACITY];
 static _Thread_local tb_result last_code = TB_OK;
@@ -21,6 +23,7 @@ tb_result tb_fail(struct tb_world* world, tb_result r, const char* fmt, ...) {
   if (world != NULL) {
     memcpy(world->last_error, last_message, sizeof world->last_error);
   }
+  tb_log(last_message);
   return r;
 }
 
@@ -72,8 +75,8 @@ tb_result tb_check_angle(struct tb_world* w, const char* fn, const char* name, f
 }
 
 tb_result tb_check_gravity(struct tb_world* w, const char* fn, const char* name, tb_vec2 g) {
-  if (isfinite(g.x) && isfinite(g.y) && sqrtf(g.x * g.x + g.y * g.y) <= TB_MAX_GRAVITY) return TB_OK;
+  if (isfinite(g.x) && isfinite(g.y) && sqrtf(g.x * g.x + g.y * g.y) <= tb_units.max_gravity) return TB_OK;
   return tb_fail(w, TB_ERR_INVALID_ARGUMENT,
-                 "%s: %s = (%g, %g) must be finite and at most TB_MAX_GRAVITY (%g m/s^2) long", fn, name, (double)g.x,
-                 (double)g.y, (double)TB_MAX_GRAVITY);
+                 "%s: %s = (%g, %g) must be finite and at most TB_MAX_GRAVITY (%g units/s^2) long", fn, name,
+                 (double)g.x, (double)g.y, (double)tb_units.max_gravity);
 }

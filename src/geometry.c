@@ -13,6 +13,7 @@
 #include "distance.h"
 #include "error.h"
 #include "math_internal.h"
+#include "units.h"
 
 #define TB_PI 3.14159265358979323846
 
@@ -233,7 +234,7 @@ const char* tb_check_capsule(const tb_capsule* c) {
   if (!tb_point_ok(c->center1) || !tb_point_ok(c->center2))
     return "capsule centers are not finite or beyond TB_MAX_LENGTH";
   if (!(c->radius > 0.0f) || !tb_length_ok(c->radius)) return "capsule radius must be > 0, finite and <= TB_MAX_LENGTH";
-  if (tb_distance_sq(c->center1, c->center2) < TB_LINEAR_SLOP * TB_LINEAR_SLOP)
+  if (tb_distance_sq(c->center1, c->center2) < tb_units.linear_slop * tb_units.linear_slop)
     return "capsule centers coincide (use a circle)";
   return NULL;
 }
@@ -241,7 +242,8 @@ const char* tb_check_capsule(const tb_capsule* c) {
 const char* tb_check_segment(const tb_segment* s) {
   if (!tb_point_ok(s->point1) || !tb_point_ok(s->point2))
     return "segment points are not finite or beyond TB_MAX_LENGTH";
-  if (tb_distance_sq(s->point1, s->point2) < TB_LINEAR_SLOP * TB_LINEAR_SLOP) return "segment points coincide";
+  if (tb_distance_sq(s->point1, s->point2) < tb_units.linear_slop * tb_units.linear_slop)
+    return "segment points coincide";
   return NULL;
 }
 

@@ -3,9 +3,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "memory.h"
 #include "error.h"
 #include "geometry.h"
 #include "math_internal.h"
+#include "units.h"
 
 static int compare_points(const void* pa, const void* pb) {
   const tb_vec2 *a = pa, *b = pb;
@@ -61,21 +63,22 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
   }
 
   /* the points, then room for both chains (up to 2n entries) */
-  tb_vec2* pts = malloc((size_t)count * 3 * sizeof *pts);
+  const size_t bytes = (size_t)count * 3 * sizeof(tb_vec2);
+  tb_vec2* pts = tb_mem_alloc(bytes);
+  const float slop = tb_units.linear_slop;
   if (pts == NULL) return tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_make_polygon: no memory for %d points", count);
   tb_vec2* hull = pts + count;
 
   int n = 0; /* weld near-duplicates */
   for (int i = 0; i < count; ++i) {
     bool unique = true;
-    for (int j = 0; j < n && unique; ++j) unique = tb_distance_sq(points[i], pts[j]) >= TB_LINEAR_SLOP * TB_LINEAR_SLOP;
+    for (int j = 0; j < n && unique; ++j) unique = tb_distance_sq(points[i], pts[j]) >= slop * slop;
     if (unique) pts[n++] = points[i];
   }
   if (n < 3) {
-    free(pts);
+    tb_mem_free(pts, bytes);
     return tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON,
-                   "tb_make_polygon: only %d distinct points after welding points closer than %g m", n,
-                   (double)TB_LINEAR_SLOP);
+                   "tb_make_polygon: only %d distinct points after welding points closer than %g m", n, (double)slop);
   }
   qsort(pts, (size_t)n, sizeof *pts, compare_points);
 
@@ -95,7 +98,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
     removed = false;
     for (int i = 0; i < h; ++i) {
       tb_vec2 a = hull[(i + h - 1) % h], b = hull[(i + 1) % h];
-      if (line_distance(a, b, hull[i]) < 0.5f * TB_LINEAR_SLOP) {
+      if (line_distance(a, b, hull[i]) < 0.5f * slop) {
         memmove(hull + i, hull + i + 1, (size_t)(h - i - 1) * sizeof *hull);
         --h;
         removed = true;
@@ -114,7 +117,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
     double area = 0.0;
     for (int i = 1; i + 1 < h; ++i) area += 0.5 * tb_cross(tb_sub(hull[i], hull[0]), tb_sub(hull[i + 1], hull[0]));
     tb_polygon made;
-    if (area < (double)TB_LINEAR_SLOP * TB_LINEAR_SLOP) {
+    if (area < (double)slop * slop) {
       r = tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON, "tb_make_polygon: hull area %g m^2 is near zero", area);
     } else {
       finish_polygon(&made, hull, h, radius);
@@ -128,7 +131,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
                     why);
     }
   }
-  free(pts);
+  tb_mem_free(pts, bytes);
   return r;
 }
 

@@ -30,6 +30,7 @@
 #include "broad_phase.h"
 #include "math_internal.h"
 #include "world.h"
+#include "units.h"
 
 static const tb_joint_id null_joint = {0, 0, 0};
 
@@ -907,7 +908,7 @@ static tb_joint new_joint(tb_joint_type type, bool collide_connected, void* user
 /* ==== definitions and creation ================================================ */
 
 tb_distance_joint_def tb_default_distance_joint_def(void) {
-  return (tb_distance_joint_def){.length = 1.0f, .min_length = 0.0f, .max_length = TB_MAX_LENGTH};
+  return (tb_distance_joint_def){.length = tb_meters(1.0f), .min_length = 0.0f, .max_length = TB_MAX_LENGTH};
 }
 
 tb_revolute_joint_def tb_default_revolute_joint_def(void) { return (tb_revolute_joint_def){.enable_limit = false}; }
@@ -924,11 +925,14 @@ tb_wheel_joint_def tb_default_wheel_joint_def(void) {
 }
 
 tb_mouse_joint_def tb_default_mouse_joint_def(void) {
-  return (tb_mouse_joint_def){.hertz = 5.0f, .damping_ratio = 0.7f, .max_force = 1000.0f, .collide_connected = true};
+  /* a force is kg units/s^2, a torque kg units^2/s^2 (tb_set_length_units_per_meter) */
+  return (tb_mouse_joint_def){
+      .hertz = 5.0f, .damping_ratio = 0.7f, .max_force = tb_meters(1000.0f), .collide_connected = true};
 }
 
 tb_motor_joint_def tb_default_motor_joint_def(void) {
-  return (tb_motor_joint_def){.max_force = 1.0f, .max_torque = 1.0f, .correction_factor = 0.3f};
+  return (tb_motor_joint_def){
+      .max_force = tb_meters(1.0f), .max_torque = tb_meters(tb_meters(1.0f)), .correction_factor = 0.3f};
 }
 
 static tb_result check_anchors(tb_world* w, const char* fn, tb_vec2 a, tb_vec2 b) {
@@ -938,7 +942,7 @@ static tb_result check_anchors(tb_world* w, const char* fn, tb_vec2 a, tb_vec2 b
 
 static tb_result check_distance_def(tb_world* w, const char* fn, const tb_distance_joint_def* d) {
   TRY(check_anchors(w, fn, d->local_anchor_a, d->local_anchor_b));
-  TRY(check_length(w, fn, "def->length", d->length, TB_LINEAR_SLOP));
+  TRY(check_length(w, fn, "def->length", d->length, tb_units.linear_slop));
   TRY(check_spring(w, fn, "def->hertz", d->hertz, "def->damping_ratio", d->damping_ratio));
   TRY(check_length(w, fn, "def->min_length", d->min_length, 0.0f));
   TRY(check_length(w, fn, "def->max_length", d->max_length, 0.0f));
@@ -1278,7 +1282,7 @@ static void world_anchors(const tb_world* w, const tb_joint* j, tb_vec2* pa, tb_
 
 tb_result tb_distance_joint_set_length(tb_joint_id id, float length) {
   GET_TYPED_FOR_CHANGE(id, TB_JOINT_DISTANCE);
-  TRY(check_length(w, __func__, "length", length, TB_LINEAR_SLOP));
+  TRY(check_length(w, __func__, "length", length, tb_units.linear_slop));
   j->length = length;
   wake_joint_bodies(w, j);
   return TB_OK;

@@ -43,6 +43,7 @@
  * body whose mode is already stable (a pendulum: h^2 k / I ~ 1e-4) is solved
  * as before; the slowed turn would otherwise lengthen its period by that
  * fraction. The relax pass, which only removes the bias velocity, keeps I. */
+#include "memory.h"
 #include "joint_tree.h"
 
 #include <math.h>
@@ -80,11 +81,11 @@ typedef struct tb_jt_node {
 } tb_jt_node;
 
 void tb_joint_tree_free(tb_joint_tree* t) {
-  free(t->nodes);
-  free(t->order);
-  free(t->body_scratch);
-  free(t->edges);
-  free(t->components);
+  tb_mem_free(t->nodes, (size_t)t->node_capacity * sizeof *t->nodes);
+  tb_mem_free(t->order, (size_t)t->order_capacity * sizeof *t->order);
+  tb_mem_free(t->body_scratch, (size_t)t->body_capacity * sizeof *t->body_scratch);
+  tb_mem_free(t->edges, (size_t)t->edge_capacity * sizeof *t->edges);
+  tb_mem_free(t->components, (size_t)t->component_capacity * sizeof *t->components);
   memset(t, 0, sizeof *t);
 }
 
@@ -445,4 +446,10 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
     int from = t->components[k], to = t->components[k + 1];
     if (use_bias || tree_active(ctx, t, from, to)) substitute(w, ctx, from, to, use_bias);
   }
+}
+
+size_t tb_joint_tree_bytes(const tb_joint_tree* t) {
+  return (size_t)t->node_capacity * sizeof *t->nodes + (size_t)t->order_capacity * sizeof *t->order +
+         (size_t)t->body_capacity * sizeof *t->body_scratch + (size_t)t->edge_capacity * sizeof *t->edges +
+         (size_t)t->component_capacity * sizeof *t->components;
 }

@@ -5,6 +5,7 @@
 #define TB_JOINT_TREE_H
 
 #include <stdbool.h>
+#include <stddef.h>
 
 #include "solver.h"
 
@@ -30,6 +31,8 @@ typedef struct tb_joint_tree {
 struct tb_world;
 
 void tb_joint_tree_free(tb_joint_tree* t);
+/* Bytes its arrays hold. */
+size_t tb_joint_tree_bytes(const tb_joint_tree* t);
 /* After the joints are prepared: finds the groups of jointed bodies that form
  * trees (a group with a loop stays with Gauss-Seidel), marks their joints
  * in_tree and orders the nodes. false when out of memory (then no

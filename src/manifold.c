@@ -26,6 +26,7 @@
 #include "error.h"
 #include "geometry.h"
 #include "math_internal.h"
+#include "units.h"
 
 #if !defined(__GNUC__)
 #error "tumble's manifolds need GCC-style vector extensions (GCC or Clang)"
@@ -33,7 +34,7 @@
 
 /* Below this core gap (m) a direction between two closest points is noise; the
  * face normal of the separating-axis test is used instead. */
-#define TB_CORE_GAP_TOLERANCE (0.1f * TB_LINEAR_SLOP)
+#define TB_CORE_GAP_TOLERANCE (0.1f * tb_units.linear_slop)
 
 /* ------------------------------------------------------------- helpers -- */
 
@@ -175,7 +176,7 @@ static inline void point_contact(local_manifold* m, tb_vec2 pa, tb_vec2 pb, floa
   tb_vec2 d = tb_sub(pb, pa);
   float dist = tb_length(d);
   float sep = dist - ra - rb;
-  if (!(sep < TB_SPECULATIVE_DISTANCE)) return; /* also rejects NaN */
+  if (!(sep < tb_units.speculative_distance)) return; /* also rejects NaN */
   tb_vec2 n = dist > FLT_EPSILON ? tb_scale(1.0f / dist, d) : tb_normalize(fallback);
   m->normal = n;
   /* A's surface is pa + ra n, B's is pa + (dist - rb) n: midway is ra + sep / 2 */
@@ -214,7 +215,7 @@ static inline void segment_circle(local_manifold* m, tb_vec2 p1, tb_vec2 p2, flo
     s = -s;
   }
   float sep = s - ra - b->radius;
-  if (!(sep < TB_SPECULATIVE_DISTANCE)) return;
+  if (!(sep < tb_units.speculative_distance)) return;
   m->normal = n;
   add_point(m, tb_mul_add(c, ra - s + 0.5f * sep, n), sep, 0u);
   set_patch(m, n, p1, p2, c, c, b->radius + 0.5f * sep, ra + b->radius); /* the point is c - (rb + sep / 2) n */
@@ -251,7 +252,7 @@ static inline void polygon_circle(local_manifold* m, const tb_polygon* a, tb_vec
       face = i;
     }
   }
-  if (!(s - r < TB_SPECULATIVE_DISTANCE)) return;
+  if (!(s - r < tb_units.speculative_distance)) return;
   tb_vec2 v1 = a->vertices[face], v2 = a->vertices[face + 1 < a->count ? face + 1 : 0];
   if (s > 0.0f) {
     tb_vec2 e = tb_sub(v2, v1);
@@ -482,7 +483,7 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
     n = tb_scale(1.0f / dist, d);
     sep = dist - r;
   }
-  if (!(sep < TB_SPECULATIVE_DISTANCE)) return;
+  if (!(sep < tb_units.speculative_distance)) return;
   int ri, ii;
   uint32_t rt, it;
   feature_at(fr, fp->i1, fp->i2, &ri, &rt);
@@ -518,11 +519,11 @@ static void closest_contact(local_manifold* m, const face_pair* fp, float fr, fl
  *    distance. An incident edge wholly outside the slab (a degenerate case, e.g.
  *    two collinear segments end to end, where the segments' face normals are not
  *    enough axes) falls back to step 3's closest points. */
-#define TB_SLAB_TOLERANCE 1e-5f /* m: far above float rounding at game sizes, far below a slop */
+#define TB_SLAB_TOLERANCE tb_meters(1e-5f) /* m: far above float rounding at game sizes, far below a slop */
 static void clip_to_face(local_manifold* m, face_pair fp);
 
 static void collide_cores(local_manifold* m, const core* a, const core* b) {
-  float limit = a->radius + b->radius + TB_SPECULATIVE_DISTANCE;
+  float limit = a->radius + b->radius + tb_units.speculative_distance;
   int ea, eb;
   float sa = max_separation(a, b, &ea);
   if (!(sa < limit)) return;
@@ -554,7 +555,7 @@ static void collide_on_face(local_manifold* m, const core* a, int edge, const co
   tb_vec2 r1 = core_vertex(a, edge);
   fp.s = FLT_MAX;
   for (int j = 0; j < b->count; ++j) fp.s = fminf(fp.s, tb_dot(fp.n, tb_sub(core_vertex(b, j), r1)));
-  if (!(fp.s < a->radius + b->radius + TB_SPECULATIVE_DISTANCE)) return;
+  if (!(fp.s < a->radius + b->radius + tb_units.speculative_distance)) return;
   clip_to_face(m, fp);
 }
 
@@ -637,7 +638,7 @@ static void clip_to_face(local_manifold* m, face_pair fp) {
     }
     float sq = tb_dot(fp.n, tb_sub(q, r1)); /* core separation of this point */
     float sep = sq - rr - ri;
-    if (!(sep < TB_SPECULATIVE_DISTANCE)) continue;
+    if (!(sep < tb_units.speculative_distance)) continue;
     /* reference surface at q - sq n + rr n, incident surface at q - ri n */
     add_point(m, tb_mul_add(q, 0.5f * (rr - sq - ri), fp.n), sep, id);
     u_lo = u[k] < u_lo ? u[k] : u_lo;

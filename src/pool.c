@@ -1,7 +1,8 @@
 #include "pool.h"
 
-#include <stdlib.h>
 #include <string.h>
+
+#include "memory.h"
 
 void tb_pool_init(tb_pool* pool, size_t item_size) {
   memset(pool, 0, sizeof *pool);
@@ -9,24 +10,51 @@ void tb_pool_init(tb_pool* pool, size_t item_size) {
   pool->free_head = -1;
 }
 
+size_t tb_pool_history_bytes(const tb_pool_history* history) {
+  return (size_t)history->count * sizeof *history->generations;
+}
+
+void tb_pool_history_free(tb_pool_history* history) {
+  tb_mem_free(history->generations, tb_pool_history_bytes(history));
+  *history = (tb_pool_history){NULL, 0};
+}
+
+static size_t slot_bytes(const tb_pool* pool) {
+  return pool->item_size + sizeof *pool->generations + sizeof *pool->next_free;
+}
+
+size_t tb_pool_bytes(const tb_pool* pool) { return (size_t)pool->capacity * slot_bytes(pool); }
+
 void tb_pool_free(tb_pool* pool) {
-  free(pool->inherited.generations);
-  free(pool->items);
-  free(pool->generations);
-  free(pool->next_free);
+  tb_pool_history_free(&pool->inherited);
+  tb_mem_free(pool->items, (size_t)pool->capacity * pool->item_size);
+  tb_mem_free(pool->generations, (size_t)pool->capacity * sizeof *pool->generations);
+  tb_mem_free(pool->next_free, (size_t)pool->capacity * sizeof *pool->next_free);
   tb_pool_init(pool, pool->item_size);
 }
 
+/* All three arrays grow, or none does. */
 static bool grow(tb_pool* pool) {
-  int cap = pool->capacity < 16 ? 16 : pool->capacity * 2;
-  void* items = realloc(pool->items, (size_t)cap * pool->item_size);
-  if (items == NULL) return false;
+  if (pool->capacity > INT32_MAX / 2) return false;
+  int old = pool->capacity, cap = old < 16 ? 16 : old * 2;
+  void* items = tb_mem_alloc((size_t)cap * pool->item_size);
+  uint16_t* gens = items != NULL ? tb_mem_alloc((size_t)cap * sizeof *gens) : NULL;
+  int32_t* next = gens != NULL ? tb_mem_alloc((size_t)cap * sizeof *next) : NULL;
+  if (next == NULL) {
+    tb_mem_free(gens, (size_t)cap * sizeof *gens);
+    tb_mem_free(items, (size_t)cap * pool->item_size);
+    return false;
+  }
+  if (old > 0) {
+    memcpy(items, pool->items, (size_t)old * pool->item_size);
+    memcpy(gens, pool->generations, (size_t)old * sizeof *gens);
+    memcpy(next, pool->next_free, (size_t)old * sizeof *next);
+  }
+  tb_mem_free(pool->items, (size_t)old * pool->item_size);
+  tb_mem_free(pool->generations, (size_t)old * sizeof *gens);
+  tb_mem_free(pool->next_free, (size_t)old * sizeof *next);
   pool->items = items;
-  uint16_t* gens = realloc(pool->generations, (size_t)cap * sizeof *gens);
-  if (gens == NULL) return false;
   pool->generations = gens;
-  int32_t* next = realloc(pool->next_free, (size_t)cap * sizeof *next);
-  if (next == NULL) return false;
   pool->next_free = next;
   pool->capacity = cap;
   return true;
@@ -58,6 +86,7 @@ int tb_pool_alloc(tb_pool* pool) {
  * generation would wrap is retired instead of reused, so an old handle can never
  * match a new object. */
 void tb_pool_release(tb_pool* pool, int index) {
+  TB_ASSERT(tb_pool_alive(pool, index));
   pool->count -= 1;
   if (pool->generations[index] == UINT16_MAX) {
     pool->next_free[index] = -3; /* retired: never alive again */
@@ -69,7 +98,7 @@ void tb_pool_release(tb_pool* pool, int index) {
 }
 
 void tb_pool_inherit(tb_pool* pool, tb_pool_history* history) {
-  free(pool->inherited.generations);
+  tb_pool_history_free(&pool->inherited);
   pool->inherited = *history;
   *history = (tb_pool_history){NULL, 0};
 }
@@ -83,10 +112,9 @@ bool tb_pool_end_life(tb_pool* pool, tb_pool_history* history) {
   pool->inherited = (tb_pool_history){NULL, 0};
   bool ok = true;
   if (pool->high > h.count) {
-    uint16_t* grown = realloc(h.generations, (size_t)pool->high * sizeof *grown);
+    uint16_t* grown = tb_mem_grow(h.generations, tb_pool_history_bytes(&h), (size_t)pool->high * sizeof *grown);
     if (grown == NULL) {
-      free(h.generations);
-      h = (tb_pool_history){NULL, 0};
+      tb_pool_history_free(&h);
       ok = false;
     } else {
       h.generations = grown;
@@ -102,10 +130,7 @@ bool tb_pool_end_life(tb_pool* pool, tb_pool_history* history) {
     h.generations[i] = g;
     if (g >= TB_POOL_WORN) ok = false;
   }
-  if (!ok) {
-    free(h.generations);
-    h = (tb_pool_history){NULL, 0};
-  }
+  if (!ok) tb_pool_history_free(&h);
   *history = h;
   tb_pool_free(pool);
   return ok;
@@ -114,8 +139,11 @@ bool tb_pool_end_life(tb_pool* pool, tb_pool_history* history) {
 bool tb_array_reserve(void** data, int* capacity, int need, size_t item_size) {
   if (need <= *capacity) return true;
   int cap = *capacity < 16 ? 16 : *capacity;
-  while (cap < need) cap *= 2;
-  void* grown = realloc(*data, (size_t)cap * item_size);
+  while (cap < need) {
+    if (cap > INT32_MAX / 2) return false;
+    cap *= 2;
+  }
+  void* grown = tb_mem_grow(*data, (size_t)*capacity * item_size, (size_t)cap * item_size);
   if (grown == NULL) return false;
   *data = grown;
   *capacity = cap;

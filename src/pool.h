@@ -29,6 +29,10 @@ typedef struct tb_pool {
 } tb_pool;
 
 void tb_pool_init(tb_pool* pool, size_t item_size);
+/* Bytes the pool's arrays hold (capacity, not count), and a history's. */
+size_t tb_pool_bytes(const tb_pool* pool);
+size_t tb_pool_history_bytes(const tb_pool_history* history);
+void tb_pool_history_free(tb_pool_history* history);
 void tb_pool_free(tb_pool* pool);
 /* Starts an empty pool from the history an earlier world left (moved in). */
 void tb_pool_inherit(tb_pool* pool, tb_pool_history* history);
@@ -52,7 +56,8 @@ static inline void* tb_pool_at(const tb_pool* pool, int index) {
 }
 
 /* Grows *data (of *capacity items of item_size) to hold at least `need` items,
- * doubling. false when out of memory (then nothing changed). */
+ * doubling. false when out of memory (then nothing changed). Allocated
+ * through the hooks: *capacity * item_size is the block's size. */
 bool tb_array_reserve(void** data, int* capacity, int need, size_t item_size);
 
 #endif

@@ -3,6 +3,7 @@
 #include <float.h>
 #include <stdlib.h>
 
+#include "memory.h"
 #include "distance.h"
 #include "geometry.h"
 #include "math_internal.h"
@@ -175,14 +176,15 @@ tb_result tb_world_cast_ray_all(tb_world_id id, tb_vec2 origin, tb_vec2 translat
   hit_list list = {NULL, 0, 0, false};
   ray_context rc = {w, filter, all_callback, &list, 1.0f};
   cast_ray(w, origin, translation, &rc);
+  const size_t bytes = (size_t)list.capacity * sizeof *list.hits;
   if (list.failed) {
-    free(list.hits);
+    tb_mem_free(list.hits, bytes);
     return tb_fail(w, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the hits", name);
   }
   if (list.count > 1) qsort(list.hits, (size_t)list.count, sizeof *list.hits, by_fraction);
   for (int i = 0; i < list.count && i < capacity; ++i) out[i] = list.hits[i];
   *count = list.count;
-  free(list.hits);
+  tb_mem_free(list.hits, bytes);
   return TB_OK;
 }
 

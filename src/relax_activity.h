@@ -22,8 +22,9 @@
 #include <stdint.h>
 
 #include "solver.h"
+#include "units.h"
 
-#define TB_RELAX_TOLERANCE 1e-5f /* m/s: 10 um in a second */
+#define TB_RELAX_TOLERANCE tb_meters(1e-5f) /* m/s: 10 um in a second */
 
 /* Whether a constraint on solver body s is solved in the current relax pass. */
 static inline bool tb_relax_active(const tb_step_context* ctx, int s) {

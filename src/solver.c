@@ -16,8 +16,10 @@
 #include "contact.h"
 #include "joint.h"
 #include "math_internal.h"
+#include "memory.h"
 #include "relax_activity.h"
 #include "world.h"
+#include "units.h"
 
 tb_softness tb_make_softness(float hertz, float zeta, float h) {
   if (hertz == 0.0f) return tb_rigid_softness();
@@ -388,7 +390,21 @@ int tb_solve(tb_world* w, float dt, int substeps) {
      * would sink into static geometry before the contact catches them */
     if (w->enable_continuous && b->type == TB_DYNAMIC_BODY)
       b->is_fast = b->is_bullet || tb_length(moved) + b->max_extent * fabsf(turned) >
-                                       fminf(0.5f * b->min_extent, TB_SPECULATIVE_DISTANCE);
+                                       fminf(0.5f * b->min_extent, tb_units.speculative_distance);
   }
   return bad;
+}
+
+/* ---- memory ------------------------------------------------------------- */
+
+size_t tb_solver_bytes(const tb_world* w) {
+  return (size_t)w->state_capacity * sizeof *w->states + (size_t)w->motion_capacity * sizeof(tb_body_motion) +
+         (size_t)w->changed_in_capacity * sizeof *w->changed_in + (size_t)w->reach_capacity * sizeof *w->reach;
+}
+
+void tb_solver_free(tb_world* w) {
+  tb_mem_free(w->states, (size_t)w->state_capacity * sizeof *w->states);
+  tb_mem_free(w->motions, (size_t)w->motion_capacity * sizeof(tb_body_motion));
+  tb_mem_free(w->changed_in, (size_t)w->changed_in_capacity * sizeof *w->changed_in);
+  tb_mem_free(w->reach, (size_t)w->reach_capacity * sizeof *w->reach);
 }

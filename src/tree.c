@@ -19,6 +19,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "memory.h"
+
 #include "math_internal.h"
 
 /* Nodes expanded per insertion at most; beyond it the best sibling found so far
@@ -80,7 +82,7 @@ static bool reserve_nodes(tb_tree* t, int32_t extra) {
   int64_t cap = t->capacity < 16 ? 16 : t->capacity;
   while (cap - t->node_count < extra) cap *= 2;
   if (cap > INT32_MAX) return false;
-  tb_tree_node* nodes = realloc(t->nodes, (size_t)cap * sizeof *nodes);
+  tb_tree_node* nodes = tb_mem_grow(t->nodes, (size_t)t->capacity * sizeof *nodes, (size_t)cap * sizeof *nodes);
   if (nodes == NULL) return false;
   int32_t old = t->capacity, new_cap = (int32_t)cap;
   for (int32_t i = old; i < new_cap; ++i) {
@@ -397,7 +399,7 @@ tb_result tb_tree_create(tb_tree* tree, float margin) {
 
 void tb_tree_destroy(tb_tree* tree) {
   if (tree == NULL) return;
-  free(tree->nodes);
+  tb_mem_free(tree->nodes, tb_tree_bytes(tree));
   float margin = tree->margin;
   *tree = (tb_tree){.nodes = NULL, .free_list = TB_TREE_NULL, .root = TB_TREE_NULL, .margin = margin};
 }
@@ -498,13 +500,13 @@ static void stack_init(node_stack* s) {
 }
 
 static void stack_free(node_stack* s) {
-  if (s->items != s->local) free(s->items);
+  if (s->items != s->local) tb_mem_free(s->items, (size_t)s->capacity * sizeof *s->items);
 }
 
 static bool stack_push(node_stack* s, int32_t v) {
   if (s->count == s->capacity) {
     int32_t cap = s->capacity * 2;
-    int32_t* items = malloc((size_t)cap * sizeof *items);
+    int32_t* items = tb_mem_alloc((size_t)cap * sizeof *items);
     if (items == NULL) return false;
     memcpy(items, s->items, (size_t)s->count * sizeof *items);
     stack_free(s);
@@ -611,10 +613,10 @@ typedef struct ray_stack {
 static bool ray_push(ray_stack* s, int32_t node, float enter) {
   if (s->count == s->capacity) {
     int32_t cap = s->capacity * 2;
-    ray_entry* items = malloc((size_t)cap * sizeof *items);
+    ray_entry* items = tb_mem_alloc((size_t)cap * sizeof *items);
     if (items == NULL) return false;
     memcpy(items, s->items, (size_t)s->count * sizeof *items);
-    if (s->items != s->local) free(s->items);
+    if (s->items != s->local) tb_mem_free(s->items, (size_t)s->capacity * sizeof *s->items);
     s->items = items;
     s->capacity = cap;
   }
@@ -675,7 +677,7 @@ tb_result tb_tree_ray_cast(const tb_tree* tree, const tb_tree_ray_input* input, 
       break;
     }
   }
-  if (stack.items != stack.local) free(stack.items);
+  if (stack.items != stack.local) tb_mem_free(stack.items, (size_t)stack.capacity * sizeof *stack.items);
   return result;
 }
 
@@ -826,7 +828,7 @@ tb_result tb_tree_rebuild(tb_tree* tree) {
   if (tree == NULL) return TB_ERR_NULL_ARGUMENT;
   int32_t count = tree->proxy_count;
   if (count < 3) return TB_OK;
-  int32_t* leaves = malloc((size_t)(2 * count) * sizeof *leaves);
+  int32_t* leaves = tb_mem_alloc((size_t)(2 * count) * sizeof *leaves);
   if (leaves == NULL) return TB_ERR_OUT_OF_MEMORY;
   int32_t* order = leaves + count; /* internal nodes in creation order */
   tb_tree_node* n = tree->nodes;
@@ -865,6 +867,6 @@ tb_result tb_tree_rebuild(tb_tree* tree) {
     }
   }
   for (int32_t k = created - 1; k >= 0; --k) refit(n, order[k]);
-  free(leaves);
+  tb_mem_free(leaves, (size_t)(2 * count) * sizeof *leaves);
   return TB_OK;
 }

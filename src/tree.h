@@ -74,6 +74,8 @@ typedef float tb_tree_ray_fn(const tb_tree_ray_input* input, int32_t proxy, int3
 tb_result tb_tree_create(tb_tree* tree, float margin);
 /* Frees all memory; the tree is left empty and usable (as if just created). */
 void tb_tree_destroy(tb_tree* tree);
+/* Bytes the tree's node array holds. */
+static inline size_t tb_tree_bytes(const tb_tree* tree) { return (size_t)tree->capacity * sizeof *tree->nodes; }
 
 /* Insert a proxy for a tight AABB (finite, lower <= upper, within TB_MAX_LENGTH).
  * Returns its id, or TB_TREE_NULL on bad input or when out of memory. */

@@ -6,7 +6,9 @@
 
 #include "chain.h"
 #include "math_internal.h"
+#include "memory.h"
 #include "timer.h"
+#include "units.h"
 
 /* Worlds live in a fixed table so that a world handle can be checked without
  * touching freed memory. A slot's generation counts the worlds it held; one
@@ -27,17 +29,18 @@ static tb_pool* handle_pool(tb_world* w, int which) {
 }
 
 tb_world_def tb_default_world_def(void) {
-  return (tb_world_def){.gravity = {0.0f, -10.0f},
+  /* lengths and speeds in the length units (tb_set_length_units_per_meter) */
+  return (tb_world_def){.gravity = {0.0f, tb_meters(-10.0f)},
                         .integrator = TB_INTEGRATOR_MIDPOINT,
-                        .hit_event_threshold = 1.0f,
+                        .hit_event_threshold = tb_meters(1.0f),
                         .contact_hertz = 120.0f,
                         .contact_damping_ratio = 10.0f,
-                        .contact_push_max_velocity = 3.0f,
+                        .contact_push_max_velocity = tb_meters(3.0f),
                         .relax_iterations = 8,
                         .joint_hertz = 60.0f,
                         .joint_damping_ratio = 2.0f,
-                        .restitution_threshold = 1.0f,
-                        .maximum_linear_speed = 1000.0f,
+                        .restitution_threshold = tb_meters(1.0f),
+                        .maximum_linear_speed = tb_meters(1000.0f),
                         .enable_sleep = true,
                         .enable_continuous = true,
                         .enable_warm_starting = true};
@@ -70,9 +73,9 @@ static tb_result check_relax_iterations(tb_world* w, const char* fn, const char*
 }
 
 static tb_result check_maximum_linear_speed(tb_world* w, const char* fn, const char* name, float speed) {
-  if (!(speed > 0.0f && speed <= TB_MAX_SPEED)) /* NaN fails too */
-    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and at most TB_MAX_SPEED (%g m/s)", fn, name,
-                   (double)speed, (double)TB_MAX_SPEED);
+  if (!(speed > 0.0f && speed <= tb_units.max_speed)) /* NaN fails too */
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = %g must be > 0 and at most TB_MAX_SPEED (%g units/s)", fn,
+                   name, (double)speed, (double)tb_units.max_speed);
   return TB_OK;
 }
 
@@ -116,11 +119,12 @@ tb_world_id tb_create_world(const tb_world_def* def) {
             TB_MAX_WORLDS, retired);
     return null_id;
   }
-  tb_world* w = calloc(1, sizeof *w);
+  tb_world* w = tb_mem_alloc(sizeof *w);
   if (w == NULL) {
     tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_create_world: no memory");
     return null_id;
   }
+  memset(w, 0, sizeof *w);
   w->index = (uint16_t)slot;
   w->generation = world_generations[slot];
   w->gravity = def->gravity;
@@ -142,7 +146,6 @@ tb_world_id tb_create_world(const tb_world_def* def) {
   tb_pool_init(&w->chains, sizeof(tb_chain));
   tb_pool_init(&w->joints, sizeof(tb_joint));
   tb_pool_init(&w->islands, tb_island_size());
-  for (int k = 0; k < HISTORY_POOLS; ++k) tb_pool_inherit(handle_pool(w, k), &handle_history[slot][k]);
   w->contact_hertz = def->contact_hertz;
   w->contact_damping_ratio = def->contact_damping_ratio;
   w->contact_push_max_velocity = def->contact_push_max_velocity;
@@ -155,10 +158,13 @@ tb_world_id tb_create_world(const tb_world_def* def) {
   w->enable_continuous = def->enable_continuous;
   w->enable_warm_starting = def->enable_warm_starting;
   if (tb_broad_phase_init(&w->broad_phase) != TB_OK) {
-    free(w);
+    tb_broad_phase_free(&w->broad_phase);
+    tb_mem_free(w, sizeof *w);
     tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "tb_create_world: no memory");
     return null_id;
   }
+  /* last: nothing can fail after the history moved in */
+  for (int k = 0; k < HISTORY_POOLS; ++k) tb_pool_inherit(handle_pool(w, k), &handle_history[slot][k]);
   worlds[slot] = w;
   return (tb_world_id){(uint16_t)(slot + 1), w->generation};
 }
@@ -256,37 +262,27 @@ tb_result tb_destroy_world(tb_world_id id) {
     histories_kept &= tb_pool_end_life(handle_pool(w, k), &handle_history[slot][k]);
   if (world_generations[slot] == UINT16_MAX || !histories_kept) {
     world_retired[slot] = true;
-    for (int k = 0; k < HISTORY_POOLS; ++k) {
-      free(handle_history[slot][k].generations);
-      handle_history[slot][k] = (tb_pool_history){NULL, 0};
-    }
+    for (int k = 0; k < HISTORY_POOLS; ++k) tb_pool_history_free(&handle_history[slot][k]);
   } else {
     world_generations[slot] += 1;
   }
   tb_pool_free(&w->contacts);
   tb_islands_free(w);
-  free(w->awake);
-  free(w->states);
-  free(w->motions);
-  free(w->changed_in);
-  free(w->reach);
-  free(w->new_contact_bodies);
-  free(w->step_contacts);
-  free(w->constraints);
-  free(w->color_lanes);
-  free(w->wide);
-  free(w->deep_contacts);
-  free(w->push_velocities);
-  free(w->step_joints);
+  tb_mem_free(w->awake, (size_t)w->awake_capacity * sizeof *w->awake);
+  tb_solver_free(w);
+  tb_contact_solver_free(w);
+  tb_mem_free(w->new_contact_bodies, (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies);
+  tb_mem_free(w->step_contacts, (size_t)w->step_contact_capacity * sizeof *w->step_contacts);
+  tb_mem_free(w->step_joints, (size_t)w->step_joint_capacity * sizeof *w->step_joints);
   tb_joint_tree_free(&w->joint_tree);
-  free(w->scratch);
+  tb_mem_free(w->scratch, (size_t)w->scratch_capacity * sizeof *w->scratch);
   tb_broad_phase_free(&w->broad_phase);
-  free(w->begin_events);
-  free(w->end_events);
-  free(w->hit_events);
-  free(w->sensor_begin_events);
-  free(w->sensor_end_events);
-  free(w);
+  tb_mem_free(w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
+  tb_mem_free(w->end_events, (size_t)w->end_capacity * sizeof *w->end_events);
+  tb_mem_free(w->hit_events, (size_t)w->hit_capacity * sizeof *w->hit_events);
+  tb_mem_free(w->sensor_begin_events, (size_t)w->sensor_begin_capacity * sizeof *w->sensor_begin_events);
+  tb_mem_free(w->sensor_end_events, (size_t)w->sensor_end_capacity * sizeof *w->sensor_end_events);
+  tb_mem_free(w, sizeof *w);
   return TB_OK;
 }
 
@@ -315,6 +311,7 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   w->begin_count = w->end_count = w->hit_count = 0;
   w->sensor_begin_count = w->sensor_end_count = 0;
   w->bad_mix_count = 0;
+  unsigned failures_before = tb_mem_failure_count();
   tb_profile* p = &w->profile;
   double t0 = tb_clock_ms();
   int pairs_before = w->contacts.count;
@@ -348,6 +345,12 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   w->locked = false;
   w->time += time_step;
   w->step_count += 1;
+  unsigned failures = tb_mem_failure_count() - failures_before;
+  if (failures > 0)
+    return tb_fail(w, TB_ERR_OUT_OF_MEMORY,
+                   "tb_world_step: %u allocations failed in the step; the world is consistent, what they were for was "
+                   "skipped (new contacts are found again later, events dropped, or the solve waits for the next step)",
+                   failures);
   if (bad > 0)
     return tb_fail(w, TB_ERR_NUMERIC,
                    "tb_world_step: %d bodies got a non-finite state (from a force or the force field) and were "
@@ -871,4 +874,90 @@ const char* tb_world_last_error(tb_world_id id) {
   int slot = (int)id.index1 - 1;
   if (!tb_world_is_valid(id)) return "the world handle is null or the world was destroyed";
   return worlds[slot]->last_error;
+}
+
+/* ---- memory ---------------------------------------------------------------- */
+
+int tb_world_count(void) {
+  int n = 0;
+  for (int i = 0; i < TB_MAX_WORLDS; ++i) n += worlds[i] != NULL;
+  return n;
+}
+
+size_t tb_get_retained_byte_count(void) {
+  size_t bytes = 0;
+  for (int slot = 0; slot < TB_MAX_WORLDS; ++slot)
+    for (int k = 0; k < HISTORY_POOLS; ++k) bytes += tb_pool_history_bytes(&handle_history[slot][k]);
+  return bytes;
+}
+
+/* Copies every slot's handle history into blocks of the new allocator, then
+ * frees the old blocks with the current one; false (nothing changed) when the
+ * new allocator has no memory. Called only while no world exists. */
+bool tb_world_histories_move(tb_alloc_fn* alloc, tb_free_fn* free_fn, void* context) {
+  uint16_t* copies[TB_MAX_WORLDS][HISTORY_POOLS];
+  bool ok = true;
+  for (int slot = 0; slot < TB_MAX_WORLDS; ++slot)
+    for (int k = 0; k < HISTORY_POOLS; ++k) {
+      size_t bytes = tb_pool_history_bytes(&handle_history[slot][k]);
+      copies[slot][k] = ok && bytes > 0 ? alloc(bytes, TB_ALLOCATION_ALIGNMENT, context) : NULL;
+      if (bytes > 0 && copies[slot][k] == NULL) ok = false;
+    }
+  for (int slot = 0; slot < TB_MAX_WORLDS; ++slot)
+    for (int k = 0; k < HISTORY_POOLS; ++k) {
+      tb_pool_history* h = &handle_history[slot][k];
+      uint16_t* copy = copies[slot][k];
+      if (copy == NULL) continue;
+      if (ok) {
+        memcpy(copy, h->generations, tb_pool_history_bytes(h));
+        tb_mem_free(h->generations, tb_pool_history_bytes(h));
+        h->generations = copy;
+      } else {
+        free_fn(copy, tb_pool_history_bytes(h), context);
+      }
+    }
+  return ok;
+}
+
+static void memory_stats(const tb_world* w, tb_memory_stats* m) {
+  *m = (tb_memory_stats){0};
+  m->world = sizeof *w;
+  m->bodies = tb_pool_bytes(&w->bodies) + (size_t)w->awake_capacity * sizeof *w->awake;
+  m->shapes = tb_pool_bytes(&w->shapes) + tb_pool_bytes(&w->chains) + tb_chains_bytes(w);
+  m->contacts = tb_pool_bytes(&w->contacts) + tb_broad_phase_pair_bytes(&w->broad_phase);
+  m->joints = tb_pool_bytes(&w->joints);
+  m->broad_phase = tb_broad_phase_tree_bytes(&w->broad_phase);
+  m->islands = tb_pool_bytes(&w->islands);
+  m->solver = tb_solver_bytes(w) + tb_contact_solver_bytes(w) + tb_joint_tree_bytes(&w->joint_tree) +
+              (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies +
+              (size_t)w->step_contact_capacity * sizeof *w->step_contacts +
+              (size_t)w->step_joint_capacity * sizeof *w->step_joints +
+              (size_t)w->scratch_capacity * sizeof *w->scratch;
+  m->events = (size_t)w->begin_capacity * sizeof *w->begin_events + (size_t)w->end_capacity * sizeof *w->end_events +
+              (size_t)w->hit_capacity * sizeof *w->hit_events +
+              (size_t)w->sensor_begin_capacity * sizeof *w->sensor_begin_events +
+              (size_t)w->sensor_end_capacity * sizeof *w->sensor_end_events;
+  for (int k = 0; k < HISTORY_POOLS; ++k)
+    m->handle_history += tb_pool_history_bytes(&handle_pool((tb_world*)w, k)->inherited);
+  m->total = m->world + m->bodies + m->shapes + m->contacts + m->joints + m->broad_phase + m->islands + m->solver +
+             m->events + m->handle_history;
+}
+
+size_t tb_world_get_byte_count(tb_world_id id) {
+  tb_world* w = tb_world_get(id, "tb_world_get_byte_count");
+  if (w == NULL) return 0;
+  tb_memory_stats m;
+  memory_stats(w, &m);
+  return m.total;
+}
+
+tb_result tb_world_get_memory_stats(tb_world_id id, tb_memory_stats* stats) {
+  tb_world* w = tb_world_get(id, "tb_world_get_memory_stats");
+  if (w == NULL) {
+    if (stats != NULL) *stats = (tb_memory_stats){0};
+    return tb_last_result();
+  }
+  if (stats == NULL) return tb_fail(w, TB_ERR_NULL_ARGUMENT, "tb_world_get_memory_stats: stats is NULL");
+  memory_stats(w, stats);
+  return TB_OK;
 }

@@ -169,4 +169,14 @@ void tb_contact_solver_finish(tb_world* w, struct tb_step_context* ctx);
  * first time of impact. Returns the number of bodies swept. */
 int tb_solve_continuous(tb_world* world);
 
+/* Memory (world.c, and each part's own file for its private types). */
+int tb_world_count(void);
+bool tb_world_histories_move(tb_alloc_fn* alloc, tb_free_fn* free_fn, void* context);
+size_t tb_chains_bytes(const tb_world* w);
+size_t tb_solver_bytes(const tb_world* w);
+size_t tb_contact_solver_bytes(const tb_world* w);
+/* Free the step scratch of solver.c and contact_solver.c. */
+void tb_solver_free(tb_world* w);
+void tb_contact_solver_free(tb_world* w);
+
 #endif

@@ -295,6 +295,10 @@ START_TEST(stale_worlds) {
     REJECT(tb_world_hash(w), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_get_contact_events(w), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_get_sensor_events(w), TB_ERR_STALE_HANDLE, "world");
+    REJECT(tb_world_get_byte_count(w), TB_ERR_STALE_HANDLE, "world");
+    tb_memory_stats stats = {.total = 1};
+    REJECT(tb_world_get_memory_stats(w, &stats), TB_ERR_STALE_HANDLE, "world");
+    ck_assert_uint_eq(stats.total, 0);
     tb_body_def bd = tb_default_body_def();
     REJECT(tb_create_body(w, &bd), TB_ERR_STALE_HANDLE, "world");
     tb_distance_joint_def dd = tb_default_distance_joint_def();
@@ -306,6 +310,27 @@ START_TEST(stale_worlds) {
     REJECT(tb_world_overlap_aabb(w, ((tb_aabb){{0, 0}, {1, 1}}), f, NULL, NULL), TB_ERR_STALE_HANDLE, "world");
     ck_assert_uint_eq(tb_world_hash(w), 0);
   }
+}
+END_TEST
+
+/* The global settings (allocator, log, assert, length units): NULL hooks
+ * and bad units are refused first, then any change while a world exists
+ * (here W, its twin and OTHER); the settings stay as they were. */
+START_TEST(global_settings) {
+  REJECT(tb_set_allocator(NULL, tb_default_free, NULL), TB_ERR_NULL_ARGUMENT, "alloc is NULL");
+  REJECT(tb_set_allocator(tb_default_alloc, NULL, NULL), TB_ERR_NULL_ARGUMENT, "free is NULL");
+  REJECT(tb_set_allocator(NULL, NULL, NULL), TB_ERR_NULL_ARGUMENT, "tb_set_allocator");
+  REJECT(tb_set_allocator(tb_default_alloc, tb_default_free, NULL), TB_ERR_LOCKED, "no world exists");
+  REJECT(tb_set_log_function(NULL, NULL), TB_ERR_LOCKED, "tb_set_log_function");
+  REJECT(tb_set_assert_function(NULL, NULL), TB_ERR_LOCKED, "tb_set_assert_function");
+  const float bad_units[] = {NAN, INFINITY, -INFINITY, 0.0f, -1.0f, -100.0f, 1e-4f, 1e4f, 1e30f};
+  for (int i = 0; i < (int)(sizeof bad_units / sizeof bad_units[0]); ++i)
+    REJECT(tb_set_length_units_per_meter(bad_units[i]), TB_ERR_INVALID_ARGUMENT, "units_per_meter");
+  REJECT(tb_set_length_units_per_meter(100.0f), TB_ERR_LOCKED, "tb_set_length_units_per_meter");
+  REJECT(tb_set_length_units_per_meter(1.0f), TB_ERR_LOCKED, "no world exists");
+  ck_assert_float_eq(tb_get_length_units_per_meter(), 1.0f);
+  REJECT(tb_world_get_memory_stats(W, NULL), TB_ERR_NULL_ARGUMENT, "stats");
+  ck_assert_uint_gt(tb_world_get_byte_count(W), 0);
 }
 END_TEST
 
@@ -1883,6 +1908,7 @@ static Suite* bad_input_table_suite(void) {
   tcase_add_checked_fixture(tc, setup, teardown);
   tcase_add_test(tc, world_settings);
   tcase_add_test(tc, stale_worlds);
+  tcase_add_test(tc, global_settings);
   tcase_add_test(tc, draw_settings);
   tcase_add_test(tc, make_polygon_table);
   tcase_add_test(tc, hand_made_polygon_table);
