@@ -653,6 +653,46 @@ tb_mass_data tb_compute_circle_mass(const tb_circle* circle, float density);
 tb_mass_data tb_compute_capsule_mass(const tb_capsule* capsule, float density);
 tb_mass_data tb_compute_polygon_mass(const tb_polygon* polygon, float density);
 
+/* Geometry of one shape, at its body's current transform (world coordinates).
+ * These read the shape whatever its body's state (asleep, disabled) and its
+ * filter and sensor flag, and may be called from inside callbacks. Errors: a
+ * null, stale or foreign shape; a point, origin or translation that is not
+ * finite or beyond TB_MAX_LENGTH; a zero translation. */
+
+/* Whether the shape contains a world point, boundary included. Segments and
+ * chain segments contain nothing (false). false on error. */
+bool tb_shape_test_point(tb_shape_id shape, tb_vec2 point);
+struct tb_ray_result;
+/* A ray from origin to origin + translation against this shape alone, as
+ * tb_world_cast_ray sees it: the first point where it enters the shape, the
+ * surface normal there and the fraction of the translation. A ray that starts
+ * inside the shape does not hit it; a segment is hit from either side, a
+ * chain segment only from its front (left) side. On a miss or an error .hit
+ * is false, .fraction 1 and the rest zero (tb_ray_result is declared with the
+ * queries below). */
+struct tb_ray_result tb_shape_ray_cast(tb_shape_id shape, tb_vec2 origin, tb_vec2 translation);
+/* The point of the shape nearest to a world point: the point itself when the
+ * shape contains it, else the nearest point of its surface (rounding
+ * included). For segments, the nearest point of the segment. (0, 0) on error. */
+tb_vec2 tb_shape_get_closest_point(tb_shape_id shape, tb_vec2 target);
+
+/* Replace a shape's geometry in place, in body coordinates. The shape keeps
+ * its handle, material, filter, flags and user data, and may change type (a
+ * box made a circle is then a circle: tb_shape_get_type tells). As when a
+ * shape is created, the body's mass, centre and inertia are recomputed from
+ * its shapes (a mass set by tb_body_set_mass_data is replaced). The shape's
+ * contacts end (with end events when they touched), and the bodies it touched
+ * wake; the broad phase finds its new pairs at the next step. The body wakes.
+ * Errors: as for tb_create_*_shape (NULL, bad or degenerate geometry, a mass
+ * that overflows at the shape's density, a box beyond TB_MAX_LENGTH at the
+ * body's place), a chain segment (its geometry belongs to the chain), a call
+ * from inside tb_world_step or a callback (TB_ERR_LOCKED). A refused call
+ * changes nothing. */
+tb_result tb_shape_set_circle(tb_shape_id shape, const tb_circle* circle);
+tb_result tb_shape_set_capsule(tb_shape_id shape, const tb_capsule* capsule);
+tb_result tb_shape_set_segment(tb_shape_id shape, const tb_segment* segment);
+tb_result tb_shape_set_polygon(tb_shape_id shape, const tb_polygon* polygon);
+
 /* ------------------------------------------------------------- collision -- */
 
 /* Contacts are created this far before shapes touch (metres), so that the solver
