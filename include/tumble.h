@@ -1219,6 +1219,99 @@ tb_debug_draw tb_default_debug_draw(void);
  * component outside [0, 1] (NaN included). The world is never changed. */
 tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw);
 
+/* ---------------------------------------------------------- dynamic tree -- */
+
+/* A dynamic AABB tree for the game's own use (its own broad phase, trigger
+ * volumes, AI sight lines, particles): the bounding volume hierarchy the world
+ * uses for its shapes, on boxes and user data the game supplies. Each proxy
+ * holds a fat box (its box grown by the tree's margin on every side),
+ * category bits and a user data pointer. A tree of n proxies is at most about
+ * 1.44 log2 n high whatever the insertion order; the same calls give the
+ * same tree. Not thread-safe: use one tree from one thread at a time.
+ *
+ * Proxy ids are >= 0 and stay the same for the proxy's life. An id that is
+ * not a live proxy (negative, never handed out, destroyed) is refused with
+ * TB_ERR_INVALID_ARGUMENT; a destroyed proxy's id may be handed out again to
+ * a later proxy, so drop ids when you destroy their proxies. Boxes must be
+ * finite, within TB_MAX_LENGTH and have lower <= upper. Changes (every call
+ * that takes a non-const tree) from inside a query or ray cast callback of
+ * the same tree are refused with TB_ERR_LOCKED; nested queries are allowed.
+ * A refused call changes nothing. */
+typedef struct tb_dynamic_tree tb_dynamic_tree;
+
+#define TB_NULL_PROXY (-1)
+
+/* An empty tree whose fat boxes are the boxes given grown by margin (metres,
+ * finite, 0 to TB_MAX_LENGTH; 0 stores the boxes as they are, as Box2D v3's
+ * tree does; the world's trees use 0.1). NULL on error. */
+tb_dynamic_tree* tb_dynamic_tree_create(float margin);
+tb_result tb_dynamic_tree_destroy(tb_dynamic_tree* tree);
+
+/* Inserts a proxy for a box; returns its id, or TB_NULL_PROXY on error. */
+int32_t tb_dynamic_tree_create_proxy(tb_dynamic_tree* tree, tb_aabb aabb, uint64_t category_bits, void* user_data);
+tb_result tb_dynamic_tree_destroy_proxy(tb_dynamic_tree* tree, int32_t proxy);
+/* The proxy's box is now aabb and is expected to move by about displacement
+ * before the next call ({0, 0}: no prediction). The proxy is re-inserted,
+ * with a new fat box stretched along displacement, only when aabb leaves its
+ * fat box or the fat box has grown more than twice the one it would get now;
+ * *reinserted (may be NULL) tells whether it was. displacement: finite, each
+ * component within TB_MAX_LENGTH. */
+tb_result tb_dynamic_tree_move_proxy(tb_dynamic_tree* tree, int32_t proxy, tb_aabb aabb, tb_vec2 displacement,
+                                     bool* reinserted);
+/* Rebuilds the whole hierarchy top-down (for sets that stopped changing, e.g.
+ * a level just loaded): ids, fat boxes and user data are kept. */
+tb_result tb_dynamic_tree_rebuild(tb_dynamic_tree* tree);
+
+/* Query callback: a proxy whose fat box overlaps the query box (touching
+ * counts); return false to stop the query. */
+typedef bool tb_dynamic_tree_query_fn(int32_t proxy, void* user_data, void* context);
+/* Calls fn for every proxy with (category_bits & mask_bits) != 0 whose fat box
+ * overlaps aabb, in no particular order. */
+tb_result tb_dynamic_tree_query(const tb_dynamic_tree* tree, tb_aabb aabb, uint64_t mask_bits,
+                                tb_dynamic_tree_query_fn* fn, void* context);
+
+/* The segment origin + t translation for 0 <= t <= max_fraction (origin and
+ * translation finite and within TB_MAX_LENGTH, max_fraction in [0,
+ * TB_MAX_LENGTH]). A zero translation tests the point origin. */
+typedef struct tb_dynamic_tree_ray_input {
+  tb_vec2 origin;
+  tb_vec2 translation;
+  float max_fraction;
+} tb_dynamic_tree_ray_input;
+
+/* Ray callback: a proxy whose fat box the segment, clipped to the current max
+ * fraction, touches (input holds that clipped segment). Cast against your own
+ * object and return: 0 to stop, a negative value to ignore this proxy, the
+ * hit's fraction to clip the ray there (closest hit), or input->max_fraction
+ * to go on unclipped (a value at or above the current max fraction changes
+ * nothing, as does NaN). */
+typedef float tb_dynamic_tree_ray_fn(const tb_dynamic_tree_ray_input* input, int32_t proxy, void* user_data,
+                                     void* context);
+/* Calls fn for the proxies with (category_bits & mask_bits) != 0 whose fat box
+ * the segment touches, nearer boxes first along each branch (not a global
+ * sort: keep the closest hit by clipping). */
+tb_result tb_dynamic_tree_ray_cast(const tb_dynamic_tree* tree, const tb_dynamic_tree_ray_input* input,
+                                   uint64_t mask_bits, tb_dynamic_tree_ray_fn* fn, void* context);
+
+/* Checks the tree's invariants: links, free list, counts, heights, category
+ * bits, every internal box the union of its children's, one user data slot
+ * per proxy. TB_OK, or TB_ERR_INVALID_ARGUMENT naming what is broken (only
+ * memory corruption breaks them). */
+tb_result tb_dynamic_tree_validate(const tb_dynamic_tree* tree);
+
+/* Edges on the longest root-to-leaf path (0 for an empty or one-proxy tree). */
+int tb_dynamic_tree_get_height(const tb_dynamic_tree* tree);
+int tb_dynamic_tree_get_proxy_count(const tb_dynamic_tree* tree);
+/* The sum of the internal nodes' perimeters over the root's: lower is a better
+ * tree (0 with fewer than two proxies). */
+float tb_dynamic_tree_get_area_ratio(const tb_dynamic_tree* tree);
+/* Getters of a proxy: NULL, a zero box, 0 for a bad tree or id. */
+void* tb_dynamic_tree_get_user_data(const tb_dynamic_tree* tree, int32_t proxy);
+tb_aabb tb_dynamic_tree_get_fat_aabb(const tb_dynamic_tree* tree, int32_t proxy);
+uint64_t tb_dynamic_tree_get_category_bits(const tb_dynamic_tree* tree, int32_t proxy);
+tb_result tb_dynamic_tree_set_user_data(tb_dynamic_tree* tree, int32_t proxy, void* user_data);
+tb_result tb_dynamic_tree_set_category_bits(tb_dynamic_tree* tree, int32_t proxy, uint64_t category_bits);
+
 #ifdef __cplusplus
 }
 #endif
