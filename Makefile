@@ -128,6 +128,7 @@ $(BUILD)/tumble.pc: tools/tumble.pc.in Makefile
 install: lib $(BUILD)/tumble.pc
 	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 644 include/tumble.h $(DESTDIR)$(PREFIX)/include/tumble.h
+	install -m 644 include/tumble_math.h $(DESTDIR)$(PREFIX)/include/tumble_math.h
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/libtumble.a
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libtumble.so.0
 	ln -sf libtumble.so.0 $(DESTDIR)$(PREFIX)/lib/libtumble.so
@@ -135,6 +136,7 @@ install: lib $(BUILD)/tumble.pc
 	-@[ -z "$(DESTDIR)" ] && command -v ldconfig >/dev/null && [ "$$(id -u)" = 0 ] && ldconfig || true
 
 uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/include/tumble_math.h
 	rm -f $(DESTDIR)$(PREFIX)/include/tumble.h $(DESTDIR)$(PREFIX)/lib/libtumble.a \
 	  $(DESTDIR)$(PREFIX)/lib/libtumble.so $(DESTDIR)$(PREFIX)/lib/libtumble.so.0 \
 	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc

@@ -187,8 +187,8 @@ tb_result tb_dynamic_tree_validate(const tb_dynamic_tree* t) {
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: the hierarchy is broken (links, counts, heights or boxes)",
                    __func__);
   if (t->capacity < t->tree.capacity || (t->capacity > 0 && t->user_data == NULL) || t->locked < 0)
-    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: the user data slots do not cover the tree's %d nodes",
-                   __func__, (int)t->tree.capacity);
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: the user data slots do not cover the tree's %d nodes", __func__,
+                   (int)t->tree.capacity);
   return TB_OK;
 }
 

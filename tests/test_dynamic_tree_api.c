@@ -12,7 +12,7 @@
 #define WORLD 100.0f
 
 typedef struct item {
-  tb_aabb box; /* the tight box the game gave */
+  tb_aabb box;   /* the tight box the game gave */
   int32_t proxy; /* TB_NULL_PROXY: destroyed */
   uint64_t bits;
 } item;
@@ -270,9 +270,8 @@ static bool attack_tree(int32_t proxy, void* user_data, void* context) {
   (void)user_data;
   attack* a = context;
   a->calls += 1;
-  a->create = tb_dynamic_tree_create_proxy(a->t, (tb_aabb){{0, 0}, {1, 1}}, 1, NULL) == TB_NULL_PROXY
-                  ? tb_last_result()
-                  : TB_OK;
+  a->create = tb_dynamic_tree_create_proxy(a->t, (tb_aabb){{0, 0}, {1, 1}}, 1, NULL) == TB_NULL_PROXY ? tb_last_result()
+                                                                                                      : TB_OK;
   a->destroy = tb_dynamic_tree_destroy_proxy(a->t, proxy);
   a->move = tb_dynamic_tree_move_proxy(a->t, proxy, (tb_aabb){{50, 50}, {51, 51}}, (tb_vec2){0, 0}, NULL);
   a->rebuild = tb_dynamic_tree_rebuild(a->t);
@@ -305,7 +304,8 @@ static void assert_refused(const attack* a, int calls) {
 START_TEST(changes_from_callbacks_are_refused) {
   tb_dynamic_tree* t = tb_dynamic_tree_create(0.1f);
   int32_t ids[3];
-  for (int i = 0; i < 3; ++i) ids[i] = tb_dynamic_tree_create_proxy(t, (tb_aabb){{i * 3.0f, 0}, {i * 3.0f + 1, 1}}, 1, NULL);
+  for (int i = 0; i < 3; ++i)
+    ids[i] = tb_dynamic_tree_create_proxy(t, (tb_aabb){{i * 3.0f, 0}, {i * 3.0f + 1, 1}}, 1, NULL);
   tb_aabb fat[3];
   for (int i = 0; i < 3; ++i) fat[i] = tb_dynamic_tree_get_fat_aabb(t, ids[i]);
   attack a = {.t = t};
@@ -380,8 +380,8 @@ START_TEST(bad_trees_ids_and_boxes) {
     ck_assert(z.lower.x == 0 && z.upper.y == 0);
     ck_assert(tb_dynamic_tree_get_category_bits(t, id) == 0);
   }
-  const tb_aabb bad_boxes[] = {{{NAN, 0}, {1, 1}}, {{0, 0}, {INFINITY, 1}}, {{2, 0}, {1, 1}},
-                               {{0, 0}, {1.1e7f, 1}}, {{-2e7f, 0}, {1, 1}}};
+  const tb_aabb bad_boxes[] = {
+      {{NAN, 0}, {1, 1}}, {{0, 0}, {INFINITY, 1}}, {{2, 0}, {1, 1}}, {{0, 0}, {1.1e7f, 1}}, {{-2e7f, 0}, {1, 1}}};
   for (int i = 0; i < 5; ++i) {
     ck_assert_int_eq(tb_dynamic_tree_create_proxy(t, bad_boxes[i], 1, NULL), TB_NULL_PROXY);
     ck_assert_int_eq(tb_last_result(), TB_ERR_INVALID_ARGUMENT);
