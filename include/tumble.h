@@ -183,51 +183,49 @@ static inline bool tb_joint_id_is_null(tb_joint_id id) { return id.index1 == 0; 
  * packs to 0. Bodies, shapes, chains and joints pack index1 into the low 32
  * bits, then the world slot, then the generation; worlds index1, then the
  * generation. A packed handle is only good in the process that made it. */
-static inline bool tb_world_id_equal(tb_world_id a, tb_world_id b) {
-  return a.index1 == b.index1 && a.generation == b.generation;
-}
 static inline uint64_t tb_world_id_to_u64(tb_world_id id) {
   return (uint64_t)id.index1 | (uint64_t)id.generation << 16;
+}
+static inline bool tb_world_id_equal(tb_world_id a, tb_world_id b) {
+  return tb_world_id_to_u64(a) == tb_world_id_to_u64(b);
 }
 static inline tb_world_id tb_world_id_from_u64(uint64_t x) {
   tb_world_id out = {(uint16_t)x, (uint16_t)(x >> 16)};
   return out;
 }
-static inline bool tb_body_id_equal(tb_body_id a, tb_body_id b) {
-  return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
-}
 static inline uint64_t tb_body_id_to_u64(tb_body_id id) {
   return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
 }
+static inline bool tb_body_id_equal(tb_body_id a, tb_body_id b) { return tb_body_id_to_u64(a) == tb_body_id_to_u64(b); }
 static inline tb_body_id tb_body_id_from_u64(uint64_t x) {
   tb_body_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};
   return out;
 }
-static inline bool tb_shape_id_equal(tb_shape_id a, tb_shape_id b) {
-  return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
-}
 static inline uint64_t tb_shape_id_to_u64(tb_shape_id id) {
   return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
+}
+static inline bool tb_shape_id_equal(tb_shape_id a, tb_shape_id b) {
+  return tb_shape_id_to_u64(a) == tb_shape_id_to_u64(b);
 }
 static inline tb_shape_id tb_shape_id_from_u64(uint64_t x) {
   tb_shape_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};
   return out;
 }
-static inline bool tb_chain_id_equal(tb_chain_id a, tb_chain_id b) {
-  return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
-}
 static inline uint64_t tb_chain_id_to_u64(tb_chain_id id) {
   return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
+}
+static inline bool tb_chain_id_equal(tb_chain_id a, tb_chain_id b) {
+  return tb_chain_id_to_u64(a) == tb_chain_id_to_u64(b);
 }
 static inline tb_chain_id tb_chain_id_from_u64(uint64_t x) {
   tb_chain_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};
   return out;
 }
-static inline bool tb_joint_id_equal(tb_joint_id a, tb_joint_id b) {
-  return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
-}
 static inline uint64_t tb_joint_id_to_u64(tb_joint_id id) {
   return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
+}
+static inline bool tb_joint_id_equal(tb_joint_id a, tb_joint_id b) {
+  return tb_joint_id_to_u64(a) == tb_joint_id_to_u64(b);
 }
 static inline tb_joint_id tb_joint_id_from_u64(uint64_t x) {
   tb_joint_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};

@@ -136,12 +136,9 @@ static inline tb_rot tb_rot_from_angle(float angle) {
 static inline float tb_rot_get_angle(tb_rot q) { return atan2f(q.s, q.c); }
 /* q scaled to unit length; the identity for q shorter than 1e-20. */
 static inline tb_rot tb_rot_normalize(tb_rot q) {
-  float len = sqrtf(q.c * q.c + q.s * q.s);
-  tb_rot out = {1.0f, 0.0f};
-  if (len < 1e-20f) return out;
-  float inv = 1.0f / len;
-  out.c = inv * q.c;
-  out.s = inv * q.s;
+  tb_vec2 v = {q.c, q.s}, u = tb_vec2_normalize(v);
+  tb_rot out = {u.x, u.y};
+  if (u.x == 0.0f && u.y == 0.0f) out.c = 1.0f;
   return out;
 }
 /* Unit length within 1e-3 (|c^2 + s^2 - 1| <= 1e-3) and finite: what the
@@ -173,11 +170,9 @@ static inline tb_rot tb_rot_inv_mul(tb_rot q, tb_rot r) {
  * of the turn at t = 0.5, and faster there than at the ends). Opposite rotations have no shorter way: at their midpoint
  * the result is q1 for t < 0.5 and q2 otherwise. */
 static inline tb_rot tb_rot_nlerp(tb_rot q1, tb_rot q2, float t) {
-  tb_rot r = {q1.c + t * (q2.c - q1.c), q1.s + t * (q2.s - q1.s)};
-  float len = sqrtf(r.c * r.c + r.s * r.s);
-  if (len < 1e-20f) return t < 0.5f ? q1 : q2;
-  float inv = 1.0f / len;
-  tb_rot out = {inv * r.c, inv * r.s};
+  tb_vec2 a = {q1.c, q1.s}, b = {q2.c, q2.s}, u = tb_vec2_normalize(tb_vec2_lerp(a, b, t));
+  tb_rot out = {u.x, u.y};
+  if (u.x == 0.0f && u.y == 0.0f) return t < 0.5f ? q1 : q2;
   return out;
 }
 

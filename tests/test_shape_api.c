@@ -15,6 +15,12 @@
  * differences the tests look at (>= 1 cm). */
 #define TOL 2e-5
 
+#define assert_vec_near(got, want, tol)     \
+  do {                                      \
+    ck_assert_near((got).x, (want).x, tol); \
+    ck_assert_near((got).y, (want).y, tol); \
+  } while (0)
+
 static tb_vec2 world_of(tb_transform xf, tb_vec2 local) {
   return (tb_vec2){xf.p.x + xf.q.c * local.x - xf.q.s * local.y, xf.p.y + xf.q.s * local.x + xf.q.c * local.y};
 }
@@ -96,17 +102,14 @@ START_TEST(ray_against_a_box_on_a_rotated_body) {
   ck_assert(r.shape.index1 == box.index1 && r.shape.generation == box.generation);
   ck_assert_near(r.fraction, 1.0 / 3.0, TOL / 6.0); /* a length error over the 6 m ray */
   tb_vec2 p = world_of(xf, (tb_vec2){-1.0f, 0.2f}), n = rotate(xf, (tb_vec2){-1.0f, 0.0f});
-  ck_assert_near(r.point.x, p.x, TOL);
-  ck_assert_near(r.point.y, p.y, TOL);
-  ck_assert_near(r.normal.x, n.x, TOL);
-  ck_assert_near(r.normal.y, n.y, TOL);
+  assert_vec_near(r.point, p, TOL);
+  assert_vec_near(r.normal, n, TOL);
   /* the same ray cast down from above, along local -y: enters y = 0.5 at 1/4 */
   r = tb_shape_ray_cast(box, world_of(xf, (tb_vec2){0.3f, 1.5f}), rotate(xf, (tb_vec2){0.0f, -4.0f}));
   ck_assert(r.hit);
   ck_assert_near(r.fraction, 0.25, TOL / 4.0);
   n = rotate(xf, (tb_vec2){0.0f, 1.0f});
-  ck_assert_near(r.normal.x, n.x, TOL);
-  ck_assert_near(r.normal.y, n.y, TOL);
+  assert_vec_near(r.normal, n, TOL);
   /* too short (ends 0.1 m before the face), passing beside, starting inside */
   r = tb_shape_ray_cast(box, origin, rotate(xf, (tb_vec2){1.9f, 0.0f}));
   ck_assert(!r.hit && r.fraction == 1.0f && tb_shape_id_is_null(r.shape));
@@ -182,13 +185,11 @@ START_TEST(closest_point_on_a_capsule) {
   float h = 0.5f / sqrtf(2.0f);
   tb_vec2 got = tb_shape_get_closest_point(k, world_of(xf, (tb_vec2){3, 2}));
   tb_vec2 want = world_of(xf, (tb_vec2){1.0f + h, h});
-  ck_assert_near(got.x, want.x, TOL);
-  ck_assert_near(got.y, want.y, TOL);
+  assert_vec_near(got, want, TOL);
   /* beside the middle: straight across, local (0.3, 2) -> (0.3, 0.5) */
   got = tb_shape_get_closest_point(k, world_of(xf, (tb_vec2){0.3f, 2.0f}));
   want = world_of(xf, (tb_vec2){0.3f, 0.5f});
-  ck_assert_near(got.x, want.x, TOL);
-  ck_assert_near(got.y, want.y, TOL);
+  assert_vec_near(got, want, TOL);
   /* inside the rounding (0.45 from the core) and inside the core: the target itself */
   tb_vec2 in = world_of(xf, (tb_vec2){0.2f, 0.45f});
   got = tb_shape_get_closest_point(k, in);
@@ -208,30 +209,25 @@ START_TEST(closest_point_on_boxes_circles_and_segments) {
   /* local (3, 0.2) -> face point (1, 0.2); local (2, 3) -> corner (1, 0.5) */
   tb_vec2 got = tb_shape_get_closest_point(box, world_of(xf, (tb_vec2){3, 0.2f}));
   tb_vec2 want = world_of(xf, (tb_vec2){1, 0.2f});
-  ck_assert_near(got.x, want.x, TOL);
-  ck_assert_near(got.y, want.y, TOL);
+  assert_vec_near(got, want, TOL);
   got = tb_shape_get_closest_point(box, world_of(xf, (tb_vec2){2, 3}));
   want = world_of(xf, (tb_vec2){1, 0.5f});
-  ck_assert_near(got.x, want.x, TOL);
-  ck_assert_near(got.y, want.y, TOL);
+  assert_vec_near(got, want, TOL);
   /* a circle of radius 2 at local (5, 0): target local (5, 7) -> (5, 2) */
   tb_shape_id c = add_circle(b, (tb_vec2){5, 0}, 2.0f);
   got = tb_shape_get_closest_point(c, world_of(xf, (tb_vec2){5, 7}));
   want = world_of(xf, (tb_vec2){5, 2});
-  ck_assert_near(got.x, want.x, TOL);
-  ck_assert_near(got.y, want.y, TOL);
+  assert_vec_near(got, want, TOL);
   /* a segment: the nearest point of the segment, also for a point on its line */
   tb_segment seg = {{-4, 4}, {-2, 4}};
   tb_shape_def sd = tb_default_shape_def();
   tb_shape_id s = tb_create_segment_shape(b, &sd, &seg);
   got = tb_shape_get_closest_point(s, world_of(xf, (tb_vec2){-3, 6}));
   want = world_of(xf, (tb_vec2){-3, 4});
-  ck_assert_near(got.x, want.x, TOL);
-  ck_assert_near(got.y, want.y, TOL);
+  assert_vec_near(got, want, TOL);
   got = tb_shape_get_closest_point(s, world_of(xf, (tb_vec2){0, 4}));
   want = world_of(xf, (tb_vec2){-2, 4});
-  ck_assert_near(got.x, want.x, TOL);
-  ck_assert_near(got.y, want.y, TOL);
+  assert_vec_near(got, want, TOL);
   tb_destroy_world(w);
 }
 END_TEST
