@@ -113,6 +113,9 @@ void tb_clear_error(void);
 
 /* ------------------------------------------------------------------ math -- */
 
+/* Inline helpers on these types (vectors, rotations, transforms, boxes, a
+ * spring-damper step) are in tumble_math.h. */
+
 typedef struct tb_vec2 {
   float x, y;
 } tb_vec2;
