@@ -24,6 +24,19 @@ LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 LIB_A := $(BUILD)/libtumble.a
 LIB_SO := $(BUILD)/libtumble.so
 
+# The headless renderer (render/, public header include/tumble_render.h): a
+# second installed library, on OSMesa (software OpenGL; never also -lGL,
+# whose symbols would clash) and libpng (tools/deps.sh demo installs them).
+# `make render` builds it; the demos, their tests and `make install` use it.
+RENDER_PKGS := osmesa libpng
+RENDER_CFLAGS = $(shell pkg-config --cflags $(RENDER_PKGS) 2>/dev/null)
+RENDER_LIBS = $(shell pkg-config --libs $(RENDER_PKGS) 2>/dev/null || echo -lOSMesa -lpng)
+RENDER_LIB_SRC := $(wildcard render/*.c)
+RENDER_LIB_OBJ := $(RENDER_LIB_SRC:%.c=$(BUILD)/obj/%.o)
+RENDER_LIB_A := $(BUILD)/libtumble-render.a
+RENDER_LIB_SO := $(BUILD)/libtumble-render.so
+VERSION := 0.1.0
+
 # one check executable per suite; reference suites also link the Box2D shim
 UNIT_SRC := $(filter-out tests/test_util.c,$(wildcard tests/test_*.c))
 UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -39,7 +52,7 @@ CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck)
 # keep test and shim objects between builds (they are intermediate files otherwise)
 .SECONDARY:
 
-.PHONY: all lib test tests sanitize install uninstall clean format format-check deps-test
+.PHONY: all lib render test tests sanitize install uninstall deb clean format format-check deps-test deps-render
 
 # Each area has its own fragment in mk/ (demo, bench, stress, fuzz, ...). A
 # fragment may add to these hooks:
@@ -78,6 +91,28 @@ $(LIB_SO): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) -shared $(EXTRA_CFLAGS) -Wl,-soname,libtumble.so.0 -o $@ $^ $(LDLIBS_ALL)
 
+deps-render:
+	@tools/deps.sh demo
+
+# both libraries: libtumble-render needs libtumble.so to link
+render: deps-render
+	@$(MAKE) --no-print-directory $(LIB_A) $(LIB_SO) $(RENDER_LIB_A) $(RENDER_LIB_SO)
+
+$(BUILD)/obj/render/%.o: render/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) $(RENDER_CFLAGS) -c $< -o $@
+
+$(RENDER_LIB_A): $(RENDER_LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+# Needs libtumble.so.0 at run time (linked against build/libtumble.so).
+$(RENDER_LIB_SO): $(RENDER_LIB_OBJ) $(LIB_SO)
+	@mkdir -p $(dir $@)
+	$(CC) -shared $(EXTRA_CFLAGS) -Wl,-soname,libtumble-render.so.0 -o $@ $(RENDER_LIB_OBJ) \
+	  -L$(BUILD) -ltumble $(RENDER_LIBS) $(LDLIBS_ALL)
+
 # ---- tests -------------------------------------------------------------------
 # Test objects need check's include flags; computed only when tests are built.
 $(BUILD)/obj/tests/%.o: CHECK_INC = $(CHECK_CFLAGS)
@@ -100,7 +135,7 @@ test: deps-test
 	@$(MAKE) --no-print-directory tests $(BUILD)/tools/determinism $(EXTRA_TEST_BIN)
 	@$(MAKE) --no-print-directory DEBUG=1 build/debug/tools/determinism
 	@tools/run_tests.sh $(UNIT_BIN) $(REF_BIN) $(EXTRA_TEST_BIN)
-	@tools/check_readme_example.sh $(BUILD)
+	@MAKE="$(MAKE)" tools/check_install.sh $(BUILD)
 	@tools/check_determinism.sh $(BUILD)/tools/determinism build/debug/tools/determinism
 
 # One scene hashed after 1,000 steps; make test compares an -O0 and an -O2 build.
@@ -121,25 +156,60 @@ sanitize: deps-test
 	  $(EXTRA_SAN_BIN:$(BUILD)/%=build/sanitize/%)
 
 # ---- install -------------------------------------------------------------------
-$(BUILD)/tumble.pc: tools/tumble.pc.in Makefile
-	@mkdir -p $(dir $@)
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|0.1.0|g' $< > $@
+# Both libraries, their headers and pkg-config files. The .pc files are written
+# by each install from that call's PREFIX (never a copy kept in build/), so
+# `make install PREFIX=B` after PREFIX=A names B. Their Libs carry
+# -Wl,-rpath,${libdir} unless PREFIX is /usr (the loader's default path): a
+# program linked with `pkg-config --libs` runs without LD_LIBRARY_PATH from
+# any prefix. As root without DESTDIR, ldconfig also refreshes the loader's
+# cache (for programs linked without pkg-config, in /usr/local).
+comma := ,
+PC_RPATH = $(if $(filter /usr /usr/,$(PREFIX)),,-Wl$(comma)-rpath$(comma)$${libdir} )
+PC_SED = sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@RPATH@|$(PC_RPATH)|g'
+INSTALL_INC = $(DESTDIR)$(PREFIX)/include
+INSTALL_LIB = $(DESTDIR)$(PREFIX)/lib
 
-install: lib $(BUILD)/tumble.pc
-	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+install: render
+	install -d $(INSTALL_INC) $(INSTALL_LIB)/pkgconfig
 	install -m 644 include/tumble.h $(DESTDIR)$(PREFIX)/include/tumble.h
-	install -m 644 include/tumble_math.h $(DESTDIR)$(PREFIX)/include/tumble_math.h
-	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/libtumble.a
-	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/libtumble.so.0
-	ln -sf libtumble.so.0 $(DESTDIR)$(PREFIX)/lib/libtumble.so
-	install -m 644 $(BUILD)/tumble.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc
+	install -m 644 include/tumble_math.h $(INSTALL_INC)/tumble_math.h
+	install -m 644 include/tumble_render.h $(INSTALL_INC)/tumble_render.h
+	install -m 644 $(LIB_A) $(INSTALL_LIB)/libtumble.a
+	install -m 755 $(LIB_SO) $(INSTALL_LIB)/libtumble.so.0
+	ln -sf libtumble.so.0 $(INSTALL_LIB)/libtumble.so
+	install -m 644 $(RENDER_LIB_A) $(INSTALL_LIB)/libtumble-render.a
+	install -m 755 $(RENDER_LIB_SO) $(INSTALL_LIB)/libtumble-render.so.0
+	ln -sf libtumble-render.so.0 $(INSTALL_LIB)/libtumble-render.so
+	$(PC_SED) tools/tumble.pc.in > $(INSTALL_LIB)/pkgconfig/tumble.pc
+	$(PC_SED) tools/tumble-render.pc.in > $(INSTALL_LIB)/pkgconfig/tumble-render.pc
 	-@[ -z "$(DESTDIR)" ] && command -v ldconfig >/dev/null && [ "$$(id -u)" = 0 ] && ldconfig || true
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/include/tumble_math.h
-	rm -f $(DESTDIR)$(PREFIX)/include/tumble.h $(DESTDIR)$(PREFIX)/lib/libtumble.a \
-	  $(DESTDIR)$(PREFIX)/lib/libtumble.so $(DESTDIR)$(PREFIX)/lib/libtumble.so.0 \
-	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/tumble.pc
+	rm -f $(INSTALL_INC)/tumble_math.h
+	rm -f $(DESTDIR)$(PREFIX)/include/tumble.h $(INSTALL_INC)/tumble_render.h \
+	  $(INSTALL_LIB)/libtumble.a $(INSTALL_LIB)/libtumble.so $(INSTALL_LIB)/libtumble.so.0 \
+	  $(INSTALL_LIB)/libtumble-render.a $(INSTALL_LIB)/libtumble-render.so $(INSTALL_LIB)/libtumble-render.so.0 \
+	  $(INSTALL_LIB)/pkgconfig/tumble.pc $(INSTALL_LIB)/pkgconfig/tumble-render.pc
+	-@[ -z "$(DESTDIR)" ] && command -v ldconfig >/dev/null && [ "$$(id -u)" = 0 ] && ldconfig || true
+
+# One Debian package (libtumble: both libraries, headers, .pc files under
+# /usr) built with dpkg-deb into build/; dpkg runs ldconfig through a trigger.
+DEB_ARCH = $(shell dpkg --print-architecture 2>/dev/null || echo amd64)
+DEB_ROOT = $(BUILD)/deb/root
+deb: render
+	rm -rf $(BUILD)/deb
+	@$(MAKE) --no-print-directory install DESTDIR=$(abspath $(DEB_ROOT)) PREFIX=/usr
+	mkdir -p $(DEB_ROOT)/DEBIAN
+	printf '%s\n' 'Package: libtumble' 'Version: $(VERSION)' 'Architecture: $(DEB_ARCH)' \
+	  'Maintainer: tumble developers <tumble@localhost>' 'Section: libdevel' 'Priority: optional' \
+	  'Depends: libc6, libosmesa6, libpng16-16' "Installed-Size: $$(du -sk $(DEB_ROOT)/usr | cut -f1)" \
+	  'Description: 2D rigid-body physics engine for games' \
+	  ' libtumble, the engine (C17, libc and libm only), and libtumble-render, headless' \
+	  ' pictures and videos of its worlds (OSMesa, libpng), with their headers and' \
+	  ' pkg-config files (tumble, tumble-render).' > $(DEB_ROOT)/DEBIAN/control
+	echo 'activate-noawait ldconfig' > $(DEB_ROOT)/DEBIAN/triggers
+	cd $(DEB_ROOT) && find usr -type f | sort | xargs md5sum > DEBIAN/md5sums
+	dpkg-deb --root-owner-group --build $(DEB_ROOT) $(BUILD)/libtumble_$(VERSION)_$(DEB_ARCH).deb
 
 FORMATTED += include/*.h src/*.c src/*.h tests/*.c tests/*.h tests/reference/*.c tests/reference/*.cpp \
   tests/reference/*.h demos/*.c demos/scenes/*.c demos/scenes/*.h tools/*.c tools/*.cpp

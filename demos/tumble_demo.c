@@ -10,19 +10,18 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "render/camera.h"
-#include "render/cli_args.h"
-#include "render/gl_draw.h"
-#include "render/offscreen.h"
-#include "render/png_write.h"
-#include "render/video.h"
+#include "cli_args.h"
 #include "scenes/scenes.h"
 #include "tumble.h"
+#include "tumble_render.h"
 
 #define STEP_HZ 60
 #define SUBSTEPS 4
-/* The follow camera shows at most this many metres across. */
-#define FOLLOW_VIEW_WIDTH 40.0f
+/* The follow camera shows at most this many metres across: the car (4 m)
+ * and a stretch of the road ahead and behind. */
+#define FOLLOW_VIEW_WIDTH 12.0f
+/* Room around what the camera fits, a fraction of its size. */
+#define FIT_MARGIN 0.04f
 
 typedef struct options {
   const char* scene; /* NULL: every scene of the catalogue */
@@ -82,26 +81,12 @@ static bool make_dirs(const char* path) {
   return mkdir(buf, 0777) == 0 || errno == EEXIST;
 }
 
-/* The box of every shape, clipped to the scene's bounds (a 200 m ground under
- * a 20 m pyramid would otherwise set the zoom). */
+/* The box the bodies fill (tb_render_world_bounds: moving bodies and the
+ * static shapes near them), clipped to the scene's bounds so that a body
+ * flung far away does not shrink the rest; the bounds when nothing is left. */
 static tb_aabb content_box(tb_world_id world, tb_aabb bounds) {
-  int n = tb_scene_collect_bodies(world, NULL, 0);
-  tb_body_id* bodies = malloc(sizeof *bodies * (size_t)(n > 0 ? n : 1));
-  tb_aabb box = {{bounds.upper.x, bounds.upper.y}, {bounds.lower.x, bounds.lower.y}}; /* empty */
-  if (bodies == NULL) return bounds;
-  n = tb_scene_collect_bodies(world, bodies, n);
-  for (int i = 0; i < n; ++i) {
-    tb_shape_id shapes[64];
-    int count = tb_body_get_shapes(bodies[i], shapes, 64);
-    for (int k = 0; k < count; ++k) {
-      tb_aabb a = tb_shape_get_aabb(shapes[k]);
-      box.lower.x = fminf(box.lower.x, a.lower.x);
-      box.lower.y = fminf(box.lower.y, a.lower.y);
-      box.upper.x = fmaxf(box.upper.x, a.upper.x);
-      box.upper.y = fmaxf(box.upper.y, a.upper.y);
-    }
-  }
-  free(bodies);
+  tb_aabb box;
+  if (tb_render_world_bounds(world, &box) != TB_RENDER_OK) return bounds;
   box.lower.x = fmaxf(box.lower.x, bounds.lower.x);
   box.lower.y = fmaxf(box.lower.y, bounds.lower.y);
   box.upper.x = fminf(box.upper.x, bounds.upper.x);
@@ -112,12 +97,12 @@ static tb_aabb content_box(tb_world_id world, tb_aabb bounds) {
 /* The camera fits what the scene has shown so far (the union of the content
  * boxes of every frame: it zooms out as things spread, never in, so a video
  * does not wobble), or follows the scene's tagged body. */
-static tbr_camera scene_camera(const tb_scene* scene, tb_world_id world, tb_body_id followed, tb_aabb* seen, int width,
-                               int height) {
+static tb_render_result scene_camera(tb_renderer* r, const tb_scene* scene, tb_world_id world, tb_body_id followed,
+                                     tb_aabb* seen, tb_render_camera* camera) {
   if (!tb_body_id_is_null(followed) && tb_body_is_valid(followed)) {
     float span = scene->bounds.upper.x - scene->bounds.lower.x;
     float view = span < FOLLOW_VIEW_WIDTH ? span : FOLLOW_VIEW_WIDTH;
-    return tbr_camera_follow(tb_body_get_position(followed), view, scene->bounds, width, height);
+    return tb_render_camera_follow(r, followed, view, &scene->bounds, camera);
   }
   tb_aabb box = content_box(world, scene->bounds);
   if (seen->lower.x <= seen->upper.x) {
@@ -127,52 +112,66 @@ static tbr_camera scene_camera(const tb_scene* scene, tb_world_id world, tb_body
     box.upper.y = fmaxf(box.upper.y, seen->upper.y);
   }
   *seen = box;
-  /* room at the top for the overlay panel */
-  box.upper.y += 0.2f * (box.upper.y - box.lower.y);
-  return tbr_camera_fit(box, 0.04f, width, height);
+  return tb_render_camera_fit(r, box, FIT_MARGIN, camera); /* kept clear of the caption */
 }
 
-typedef struct renderer {
-  tbr_offscreen* target;
-  tbr_gl* gl;
-} renderer;
+/* Scene name, description and the step's numbers in the top-left corner. */
+static tb_render_result set_caption(tb_renderer* r, const options* o, const tb_scene* scene, tb_world_id world,
+                                    double step_ms) {
+  if (!o->overlay) return TB_RENDER_OK;
+  char stats[160];
+  tb_counts counts = tb_world_get_counts(world);
+  snprintf(stats, sizeof stats, "t = %.2f s   step %.2f ms   %d bodies   %d awake", tb_world_get_time(world), step_ms,
+           counts.body_count, counts.awake_body_count);
+  /* The description gives the full-size scene; say when --scale shrank it,
+   * so the caption and the body count below it agree. */
+  char description[256];
+  if (o->scale < 1.0f && tb_scene_is_performance(scene))
+    snprintf(description, sizeof description, "%s, shrunk with --scale %.2g", scene->description, (double)o->scale);
+  else
+    snprintf(description, sizeof description, "%s", scene->description);
+  const char* lines[3] = {scene->name, description, stats};
+  return tb_render_set_caption(r, lines, 3);
+}
 
-static bool render_frame(renderer* r, const options* o, const tb_scene* scene, tb_world_id world, tb_body_id followed,
-                         tb_aabb* seen, double step_ms, const char* path) {
-  tbr_camera camera = scene_camera(scene, world, followed, seen, o->width, o->height);
-  tbr_offscreen_begin(r->target);
-  tbr_gl_begin(r->gl, &camera, TBR_BACKGROUND);
-  tb_debug_draw draw = tbr_gl_debug_draw(r->gl);
-  if (tb_world_draw(world, &draw) != TB_OK) {
-    fprintf(stderr, "tumble-demo: %s\n", tb_last_error());
-    return false;
-  }
-  if (o->overlay) {
-    char stats[160];
-    tb_counts counts = tb_world_get_counts(world);
-    snprintf(stats, sizeof stats, "t = %.2f s   step %.2f ms   %d bodies   %d awake", tb_world_get_time(world), step_ms,
-             counts.body_count, counts.awake_body_count);
-    /* The description gives the full-size scene; say when --scale shrank it,
-     * so the caption and the body count below it agree. */
-    char description[256];
-    if (o->scale < 1.0f && tb_scene_is_performance(scene))
-      snprintf(description, sizeof description, "%s, shrunk with --scale %.2g", scene->description, (double)o->scale);
-    else
-      snprintf(description, sizeof description, "%s", scene->description);
-    const char* lines[3] = {scene->name, description, stats};
-    tbr_gl_overlay(r->gl, lines, 3);
-  }
-  if (!tbr_gl_flush(r->gl)) fprintf(stderr, "tumble-demo: out of memory, %s is incomplete\n", path);
-  const uint8_t* pixels = tbr_offscreen_finish(r->target);
-  char error[512];
-  if (!tbr_write_png(path, pixels, o->width, o->height, error, sizeof error)) {
-    fprintf(stderr, "tumble-demo: %s\n", error);
+static bool render_frame(tb_renderer* r, const options* o, const tb_scene* scene, tb_world_id world,
+                         tb_body_id followed, tb_aabb* seen, double step_ms, const char* path) {
+  tb_render_camera camera;
+  if (set_caption(r, o, scene, world, step_ms) != TB_RENDER_OK ||
+      scene_camera(r, scene, world, followed, seen, &camera) != TB_RENDER_OK ||
+      tb_render_world(r, world, &camera, NULL) != TB_RENDER_OK || tb_render_write_png(r, path) != TB_RENDER_OK) {
+    fprintf(stderr, "tumble-demo: %s\n", tb_render_last_error());
     return false;
   }
   return true;
 }
 
-static bool run_scene(renderer* r, const options* o, const tb_scene* scene) {
+/* The MP4 and the GIF of a sequence (--video); both NULL, with a note, when
+ * ffmpeg is missing: the PNG frames are still written. */
+enum { VIDEO_KINDS = 2 };
+static bool open_videos(const tb_renderer* r, const char* dir, double fps, tb_render_video* videos[VIDEO_KINDS]) {
+  static const char* const kinds[VIDEO_KINDS] = {"mp4", "gif"};
+  for (int k = 0; k < VIDEO_KINDS; ++k) {
+    char path[PATH_MAX + 8];
+    snprintf(path, sizeof path, "%s.%s", dir, kinds[k]);
+    videos[k] = tb_render_video_open(r, path, fps);
+    if (videos[k] != NULL) continue;
+    if (k == 1) tb_render_video_discard(videos[0]);
+    videos[0] = videos[1] = NULL;
+    if (tb_render_last_result() != TB_RENDER_ERR_NO_FFMPEG) {
+      fprintf(stderr, "tumble-demo: %s\n", tb_render_last_error());
+      return false;
+    }
+    fprintf(stderr,
+            "tumble-demo: ffmpeg is not on PATH: no MP4 or GIF, the PNG frames are in %s "
+            "(install it with tools/deps.sh video)\n",
+            dir);
+    return true;
+  }
+  return true;
+}
+
+static bool run_scene(tb_renderer* r, const options* o, const tb_scene* scene) {
   tb_world_id world = tb_scene_create_world(scene);
   if (tb_world_id_is_null(world)) {
     fprintf(stderr, "tumble-demo: %s: %s\n", scene->name, tb_last_error());
@@ -181,7 +180,7 @@ static bool run_scene(renderer* r, const options* o, const tb_scene* scene) {
   scene->build(world, o->scale);
   tb_body_id followed = tb_scene_find_body(world, scene->follow_tag);
   if (scene->follow_tag != NULL && tb_body_id_is_null(followed))
-    fprintf(stderr, "tumble-demo: %s: no body tagged '%s' to follow; the camera fits the bounds\n", scene->name,
+    fprintf(stderr, "tumble-demo: %s: no body tagged '%s' to follow; the camera fits the bodies\n", scene->name,
             scene->follow_tag);
 
   bool sequence = o->frames > 1;
@@ -192,7 +191,8 @@ static bool run_scene(renderer* r, const options* o, const tb_scene* scene) {
     tb_destroy_world(world);
     return false;
   }
-  bool ok = true;
+  tb_render_video* videos[VIDEO_KINDS] = {NULL, NULL};
+  bool ok = !(sequence && o->video) || open_videos(r, dir, (double)STEP_HZ / o->every, videos);
   int step = 0;
   tb_aabb seen = {{1.0f, 1.0f}, {-1.0f, -1.0f}}; /* nothing seen yet */
   for (int frame = 0; frame < o->frames && ok; ++frame) {
@@ -213,33 +213,29 @@ static bool run_scene(renderer* r, const options* o, const tb_scene* scene) {
       snprintf(path, sizeof path, "%s.png", dir);
     }
     ok = render_frame(r, o, scene, world, followed, &seen, step_ms / o->every, path);
+    for (int k = 0; k < VIDEO_KINDS && ok; ++k) {
+      if (videos[k] == NULL) continue;
+      if (tb_render_video_add_frame(videos[k], r) != TB_RENDER_OK) {
+        fprintf(stderr, "tumble-demo: %s\n", tb_render_last_error());
+        ok = false;
+      }
+    }
     if (ok && !sequence) printf("%s\n", path);
   }
   tb_destroy_world(world);
-  if (!ok || !sequence) return ok;
-  printf("%s/frame_00000.png ... frame_%05d.png (%d frames)\n", dir, o->frames - 1, o->frames);
-  if (!o->video) return true;
-  if (!tbr_ffmpeg_available()) {
-    fprintf(stderr,
-            "tumble-demo: ffmpeg is not on PATH: no MP4 or GIF, the PNG frames are in %s "
-            "(install it with tools/deps.sh video)\n",
-            dir);
-    return true;
-  }
-  char pattern[PATH_MAX + 32], error[512];
-  snprintf(pattern, sizeof pattern, "%s/frame_%%05d.png", dir);
-  double fps = (double)STEP_HZ / o->every;
-  const char* kinds[2] = {"mp4", "gif"};
-  for (int k = 0; k < 2; ++k) {
-    snprintf(path, sizeof path, "%s.%s", dir, kinds[k]);
-    int gif_width = o->width < 640 ? o->width : 640;
-    if (!tbr_encode_video(pattern, fps, path, gif_width, error, sizeof error)) {
-      fprintf(stderr, "tumble-demo: %s\n", error);
-      return false;
+  if (ok && sequence) printf("%s/frame_00000.png ... frame_%05d.png (%d frames)\n", dir, o->frames - 1, o->frames);
+  for (int k = 0; k < VIDEO_KINDS; ++k) {
+    if (videos[k] == NULL) continue;
+    if (!ok) {
+      tb_render_video_discard(videos[k]);
+    } else if (tb_render_video_close(videos[k]) != TB_RENDER_OK) {
+      fprintf(stderr, "tumble-demo: %s\n", tb_render_last_error());
+      ok = false;
+    } else {
+      printf("%s.%s\n", dir, k == 0 ? "mp4" : "gif");
     }
-    printf("%s\n", path);
   }
-  return true;
+  return ok;
 }
 
 int main(int argc, char** argv) {
@@ -295,12 +291,9 @@ int main(int argc, char** argv) {
     fprintf(stderr, "tumble-demo: cannot create %s: %s\n", o.out, strerror(errno));
     return 1;
   }
-  char error[512];
-  renderer r = {tbr_offscreen_create(o.width, o.height, error, sizeof error), tbr_gl_create()};
-  if (r.target == NULL || r.gl == NULL) {
-    fprintf(stderr, "tumble-demo: %s\n", r.target == NULL ? error : "out of memory");
-    tbr_offscreen_destroy(r.target);
-    tbr_gl_destroy(r.gl);
+  tb_renderer* r = tb_render_create(o.width, o.height);
+  if (r == NULL) {
+    fprintf(stderr, "tumble-demo: %s\n", tb_render_last_error());
     return 1;
   }
   int count = 0;
@@ -308,9 +301,8 @@ int main(int argc, char** argv) {
   int failed = 0;
   for (int i = 0; i < count; ++i) {
     if (o.scene != NULL && strcmp(o.scene, scenes[i].name) != 0) continue;
-    failed += !run_scene(&r, &o, &scenes[i]);
+    failed += !run_scene(r, &o, &scenes[i]);
   }
-  tbr_gl_destroy(r.gl);
-  tbr_offscreen_destroy(r.target);
+  tb_render_destroy(r);
   return failed == 0 ? 0 : 1;
 }

@@ -5,13 +5,14 @@
  * callbacks: force field, custom filter, pre-solve, friction and restitution
  * mix), bodies, shapes, joints and chains; step; forces, impulses,
  * velocities, transforms; every body, shape, joint and world setter; every
- * getter; queries; debug draw; the collide and mass functions on the worlds'
- * own shapes. Numbers are now and then NaN, infinite, huge, zero or negative,
- * and now and then legal extremes (TB_MAX_VALUE, positions at TB_MAX_LENGTH,
- * 1 mm and 1 km shapes, the smallest and largest steps); handles are now and
- * then stale (of destroyed objects and of destroyed worlds) or foreign.
- * Every callback attacks its world (create, destroy, step, set, draw: each
- * must get TB_ERR_LOCKED and change nothing) and nests queries.
+ * getter; queries; debug draw; the collide and mass functions, and the
+ * geometry and distance queries, on the worlds' own shapes. Numbers are now
+ * and then NaN, infinite, huge, zero or negative, and now and then legal
+ * extremes (TB_MAX_VALUE, positions at TB_MAX_LENGTH, 1 mm and 1 km shapes,
+ * the smallest and largest steps); handles are now and then stale (of
+ * destroyed objects and of destroyed worlds) or foreign. Every callback
+ * attacks its world (create, destroy, step, set, draw: each must get
+ * TB_ERR_LOCKED and change nothing) and nests queries.
  *
  * After every command:
  * - a refused call left every live world's hash as it was, with a message;
@@ -971,6 +972,143 @@ static tb_result draw(world_model* wm, fuzz_input* in) {
   return r;
 }
 
+/* The geometry and distance API (issue 24) on one of the world's own shapes,
+ * placed by its body, against fuzzed points, rays, proxies, sweeps and hulls.
+ * Refused calls must leave a message; accepted ones must give answers within
+ * their documented ranges. */
+static void expect_refusal_or(bool ok, const char* what) {
+  FUZZ_CHECK(tb_last_result() == TB_OK || strlen(tb_last_error()) > 0, "%s refused without a message", what);
+  FUZZ_CHECK(tb_last_result() != TB_OK || ok, "%s: an answer out of its range", what);
+}
+
+/* A point test's answer, right after it: a refused test answers false. */
+static bool point_test(bool inside) {
+  FUZZ_CHECK(!inside || tb_last_result() == TB_OK, "a refused point test answered true");
+  return inside;
+}
+
+static bool box_ok(tb_aabb b) {
+  return fuzz_vec_finite(b.lower) && fuzz_vec_finite(b.upper) && b.lower.x <= b.upper.x && b.lower.y <= b.upper.y;
+}
+
+static bool cast_ok(const tb_cast_output* o, float max_fraction) {
+  if (!o->hit) return o->fraction == 0.0f;
+  return o->fraction >= 0.0f && o->fraction <= max_fraction && fuzz_vec_finite(o->point) && fuzz_vec_finite(o->normal);
+}
+
+static void geometry_queries(fuzz_input* in, tb_shape_type t, const tb_circle* ci, const tb_capsule* ca,
+                             const tb_segment* se, const tb_polygon* po, const tb_chain_segment* ch, tb_transform x) {
+  tb_vec2 p = fuzz_point(in);
+  tb_ray_input ray = {fuzz_point(in), fuzz_vector(in, 40), fuzz_real(in, 0, 1)};
+  if (fuzz_u8(in) < 16) x.q = (tb_rot){fuzz_real(in, -1, 1), fuzz_real(in, -1, 1)}; /* now and then not a rotation */
+  tb_aabb box = {{0, 0}, {0, 0}};
+  tb_vec2 closest = {0, 0};
+  tb_cast_output hit;
+  tb_shape_proxy proxy;
+  tb_clear_error();
+  switch (t) {
+    case TB_SHAPE_CIRCLE:
+      (void)point_test(tb_point_in_circle(ci, x, p)), box = tb_compute_circle_aabb(ci, x);
+      closest = tb_closest_point_on_circle(ci, x, p), tb_ray_cast_circle(&ray, ci, x, &hit);
+      proxy = tb_make_circle_proxy(ci);
+      break;
+    case TB_SHAPE_CAPSULE:
+      (void)point_test(tb_point_in_capsule(ca, x, p)), box = tb_compute_capsule_aabb(ca, x);
+      closest = tb_closest_point_on_capsule(ca, x, p), tb_ray_cast_capsule(&ray, ca, x, &hit);
+      proxy = tb_make_capsule_proxy(ca);
+      break;
+    case TB_SHAPE_POLYGON:
+      (void)point_test(tb_point_in_polygon(po, x, p)), box = tb_compute_polygon_aabb(po, x);
+      closest = tb_closest_point_on_polygon(po, x, p), tb_ray_cast_polygon(&ray, po, x, &hit);
+      proxy = tb_make_polygon_proxy(po);
+      break;
+    default: {
+      const tb_segment* g = t == TB_SHAPE_SEGMENT ? se : &ch->segment;
+      (void)point_test(tb_point_in_segment(g, x, p)), box = tb_compute_segment_aabb(g, x);
+      closest = tb_closest_point_on_segment(g, x, p), tb_ray_cast_segment(&ray, g, x, &hit);
+      proxy = tb_make_segment_proxy(g);
+    }
+  }
+  expect_refusal_or(box_ok(box) && fuzz_vec_finite(closest) && cast_ok(&hit, ray.max_fraction), "geometry query");
+  FUZZ_CHECK(proxy.count >= 1, "the proxy of a live shape: %s", tb_last_error());
+
+  /* distance, cast and time of impact against a fuzzed offset proxy */
+  tb_vec2 pts[3] = {fuzz_point(in), fuzz_point(in), fuzz_point(in)};
+  tb_clear_error();
+  tb_shape_proxy other =
+      tb_make_offset_proxy(pts, 1 + pick(in, 3), fuzz_size(in, 0, 1), fuzz_point(in), fuzz_real(in, -7, 7));
+  expect_refusal_or(other.count >= 1, "tb_make_offset_proxy");
+  tb_clear_error();
+  other = tb_make_proxy(pts, 1 + pick(in, 3), fuzz_size(in, 0, 1));
+  expect_refusal_or(other.count >= 1, "tb_make_proxy");
+  tb_transform xo = {fuzz_point(in), {1, 0}};
+  tb_distance_input din = {proxy, other, x, xo};
+  tb_simplex_cache cache = {0};
+  tb_distance_output d;
+  for (int k = 0; k < 2; ++k) { /* cold, then warm */
+    tb_clear_error();
+    tb_shape_distance(&din, &cache, &d);
+    expect_refusal_or(d.distance >= 0.0f && isfinite(d.distance) && fuzz_vec_finite(d.point_a) &&
+                          fuzz_vec_finite(d.point_b) && d.simplex_count >= 1 && d.simplex_count <= 3,
+                      "tb_shape_distance");
+  }
+  tb_shape_cast_input cin = {proxy, other, x, xo, fuzz_vector(in, 50)};
+  tb_clear_error();
+  tb_shape_cast(&cin, &hit);
+  expect_refusal_or(cast_ok(&hit, 1.0f), "tb_shape_cast");
+  tb_sweep sa = {fuzz_point(in), x.p, fuzz_point(in), fuzz_real(in, -3, 3), fuzz_real(in, -3, 3)};
+  tb_sweep sb = {{0, 0}, xo.p, fuzz_point(in), 0.0f, fuzz_real(in, -30, 30)};
+  tb_toi_input tin = {proxy, other, sa, sb, fuzz_real(in, 0, 1), fuzz_size(in, 0, 0.05f), fuzz_size(in, 0, 0.01f)};
+  tb_toi_output toi;
+  tb_clear_error();
+  tb_time_of_impact(&tin, &toi);
+  expect_refusal_or(toi.state <= TB_TOI_FAILED && toi.fraction >= 0.0f && toi.fraction <= tin.max_fraction,
+                    "tb_time_of_impact");
+  if (tb_last_result() == TB_OK) /* an accepted sweep places its body within reach of floats */
+    FUZZ_CHECK(fuzz_vec_finite(tb_sweep_transform(&sa, toi.fraction).p), "tb_sweep_transform not finite");
+  tb_clear_error();
+  tb_segment_distance_output sd = tb_segment_distance(pts[0], pts[1], pts[2], p);
+  expect_refusal_or(sd.distance_sq >= 0.0f && sd.fraction1 >= 0.0f && sd.fraction1 <= 1.0f && sd.fraction2 >= 0.0f &&
+                        sd.fraction2 <= 1.0f,
+                    "tb_segment_distance");
+
+  /* hulls and placed polygons: a hull tb_compute_hull made is always accepted */
+  tb_vec2 cloud[TB_MAX_POLYGON_VERTICES + 2];
+  int n = 3 + pick(in, TB_MAX_POLYGON_VERTICES);
+  for (int i = 0; i < n; ++i) {
+    tb_vec2 q = fuzz_point(in);
+    cloud[i] = (tb_vec2){0.2f * q.x, 0.2f * q.y};
+  }
+  tb_hull hull;
+  tb_polygon made;
+  tb_clear_error();
+  if (tb_compute_hull(cloud, n, &hull) == TB_OK) {
+    FUZZ_CHECK(hull.count >= 3 && hull.count <= TB_MAX_POLYGON_VERTICES, "hull count %d", hull.count);
+    FUZZ_CHECK(tb_make_polygon_from_hull(&hull, 0.0f, &made) == TB_OK, "a computed hull refused: %s", tb_last_error());
+  } else {
+    expect_refusal_or(hull.count == 0, "tb_compute_hull");
+  }
+  tb_clear_error();
+  tb_make_offset_rounded_polygon(&hull, fuzz_point(in), fuzz_real(in, -7, 7), fuzz_size(in, 0, 0.2f), &made);
+  expect_refusal_or(true, "tb_make_offset_rounded_polygon");
+  tb_clear_error();
+  tb_make_offset_polygon(&hull, fuzz_point(in), fuzz_real(in, -7, 7), &made);
+  expect_refusal_or(true, "tb_make_offset_polygon");
+  tb_clear_error();
+  tb_make_offset_rounded_box(fuzz_size(in, 0.01f, 2), fuzz_size(in, 0.01f, 2), fuzz_point(in), fuzz_real(in, -7, 7),
+                             fuzz_size(in, 0, 0.2f), &made);
+  expect_refusal_or(true, "tb_make_offset_rounded_box");
+  if (t == TB_SHAPE_POLYGON) {
+    tb_clear_error();
+    tb_polygon placed;
+    if (tb_transform_polygon(po, x, &placed) == TB_OK) {
+      tb_aabb pb = tb_compute_polygon_aabb(&placed, (tb_transform){{0, 0}, {1, 0}});
+      FUZZ_CHECK(box_ok(pb), "the box of a placed polygon");
+    }
+    expect_refusal_or(true, "tb_transform_polygon");
+  }
+}
+
 /* The collide and mass functions on two of the world's own shapes, placed by
  * their bodies. */
 static void collide(world_model* wm, fuzz_input* in) {
@@ -1051,6 +1189,7 @@ static void collide(world_model* wm, fuzz_input* in) {
   for (int i = 0; i < mf.point_count; ++i)
     FUZZ_CHECK(fuzz_vec_finite(mf.points[i].point) && isfinite(mf.points[i].separation) && fuzz_vec_finite(mf.normal),
                "collide: a point not finite");
+  geometry_queries(in, t[0], &ci[0], &ca[0], &se[0], &po[0], &ch[0], x[0]);
 }
 
 /* Every getter of a body, shape, joint, chain and world: finite values for

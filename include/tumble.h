@@ -812,6 +812,247 @@ typedef struct tb_shape_proxy {
   float radius;
 } tb_shape_proxy;
 
+/* -------------------------------------------------------------- geometry -- */
+
+/* Queries on bare geometry (no world needed): bounding boxes, point tests,
+ * closest points and ray casts of a circle, capsule, segment or polygon placed
+ * by a transform (its local frame to world). Every function checks what it is
+ * given: a NULL pointer is TB_ERR_NULL_ARGUMENT; geometry the shape functions
+ * would refuse (see tb_collide_circles), a transform that is not finite, beyond
+ * TB_MAX_LENGTH or not a unit rotation (|c^2 + s^2 - 1| <= 1e-3), or a point
+ * not finite or beyond TB_MAX_LENGTH is TB_ERR_INVALID_ARGUMENT. A refused
+ * call returns the value it documents for errors and leaves the message in
+ * tb_last_error(). */
+
+/* The tight world box around the geometry at xf (a capsule's and rounded
+ * polygon's radius included). On error the zero box at the origin. */
+tb_aabb tb_compute_circle_aabb(const tb_circle* circle, tb_transform xf);
+tb_aabb tb_compute_capsule_aabb(const tb_capsule* capsule, tb_transform xf);
+tb_aabb tb_compute_segment_aabb(const tb_segment* segment, tb_transform xf);
+tb_aabb tb_compute_polygon_aabb(const tb_polygon* polygon, tb_transform xf);
+
+/* Whether the world point lies in the geometry at xf, boundary included (a
+ * rounded polygon is its core plus everything within radius). A segment has
+ * no area and contains nothing: tb_point_in_segment is false for valid input
+ * too, as for tb_world_overlap_point. On error false. */
+bool tb_point_in_circle(const tb_circle* circle, tb_transform xf, tb_vec2 point);
+bool tb_point_in_capsule(const tb_capsule* capsule, tb_transform xf, tb_vec2 point);
+bool tb_point_in_segment(const tb_segment* segment, tb_transform xf, tb_vec2 point);
+bool tb_point_in_polygon(const tb_polygon* polygon, tb_transform xf, tb_vec2 point);
+
+/* The world point of the geometry at xf closest to a world point. The shapes
+ * are solid: a point inside a circle, capsule or polygon (rounding included)
+ * is its own closest point, returned unchanged; one outside gets a point on
+ * the (rounded) surface. On error the zero vector. */
+tb_vec2 tb_closest_point_on_circle(const tb_circle* circle, tb_transform xf, tb_vec2 point);
+tb_vec2 tb_closest_point_on_capsule(const tb_capsule* capsule, tb_transform xf, tb_vec2 point);
+tb_vec2 tb_closest_point_on_segment(const tb_segment* segment, tb_transform xf, tb_vec2 point);
+tb_vec2 tb_closest_point_on_polygon(const tb_polygon* polygon, tb_transform xf, tb_vec2 point);
+
+/* A ray from origin along origin + fraction * translation, fraction in
+ * [0, max_fraction] (world; finite, within TB_MAX_LENGTH; max_fraction >= 0,
+ * usually 1). */
+typedef struct tb_ray_input {
+  tb_vec2 origin;
+  tb_vec2 translation;
+  float max_fraction;
+} tb_ray_input;
+
+/* What a ray or shape cast hit. On a miss (or an error) everything is zero. */
+typedef struct tb_cast_output {
+  tb_vec2 point;  /* world: where the ray enters, or the contact point on A's surface */
+  tb_vec2 normal; /* unit surface normal at the hit (of the shape, or of A towards B) */
+  float fraction; /* of the translation, in [0, max_fraction] (shape casts: [0, 1]) */
+  int iterations; /* of a shape cast; 0 for rays */
+  bool hit;
+} tb_cast_output;
+
+/* Ray casts against the geometry at xf. The ray hits where it enters the
+ * shape, with the outward normal there: a capsule and a rounded polygon are
+ * hit on their rounded surface (radius included), as they collide. A ray that
+ * starts strictly inside a circle, capsule or polygon does not hit it (as
+ * tb_world_cast_ray); one that starts on the surface going in hits at fraction
+ * 0. A segment is hit from either side, its normal facing the ray's origin; a
+ * ray along its line does not hit it. A zero translation hits nothing (TB_OK).
+ * Returns TB_OK or the error; out is always written (zero on a miss). */
+tb_result tb_ray_cast_circle(const tb_ray_input* ray, const tb_circle* circle, tb_transform xf, tb_cast_output* out);
+tb_result tb_ray_cast_capsule(const tb_ray_input* ray, const tb_capsule* capsule, tb_transform xf, tb_cast_output* out);
+tb_result tb_ray_cast_segment(const tb_ray_input* ray, const tb_segment* segment, tb_transform xf, tb_cast_output* out);
+tb_result tb_ray_cast_polygon(const tb_ray_input* ray, const tb_polygon* polygon, tb_transform xf, tb_cast_output* out);
+
+/* A convex hull: 3 to TB_MAX_POLYGON_VERTICES points, counter-clockwise,
+ * without near-duplicate or collinear points. */
+typedef struct tb_hull {
+  tb_vec2 points[TB_MAX_POLYGON_VERTICES];
+  int count;
+} tb_hull;
+
+/* The hull of points, by the rules and errors of tb_make_polygon (welding,
+ * collinear and interior points dropped; degenerate input or more than
+ * TB_MAX_POLYGON_VERTICES hull points refused). On error out->count is 0,
+ * which every function taking a hull refuses. */
+tb_result tb_compute_hull(const tb_vec2* points, int count, tb_hull* out);
+/* The polygon of a hull, rounded by radius (>= 0, within TB_MAX_LENGTH). The
+ * hull must be one tb_compute_hull could have made (count 3 to
+ * TB_MAX_POLYGON_VERTICES, finite points, none of them dropped when its hull
+ * is taken again): else TB_ERR_INVALID_ARGUMENT (count, points, radius) or
+ * TB_ERR_DEGENERATE_POLYGON. On error out is not written. */
+tb_result tb_make_polygon_from_hull(const tb_hull* hull, float radius, tb_polygon* out);
+/* The polygon of a hull turned by angle (within TB_MAX_ANGLE) and then moved
+ * to position (body-local), optionally rounded; errors as
+ * tb_make_polygon_from_hull, and TB_ERR_DEGENERATE_POLYGON when the placed
+ * polygon collapses in float far from the origin. */
+tb_result tb_make_offset_polygon(const tb_hull* hull, tb_vec2 position, float angle, tb_polygon* out);
+tb_result tb_make_offset_rounded_polygon(const tb_hull* hull, tb_vec2 position, float angle, float radius,
+                                         tb_polygon* out);
+/* A rounded box (core half-extents hx, hy plus radius) centred at center and
+ * rotated by angle; errors as tb_make_offset_box and tb_make_rounded_box. */
+tb_result tb_make_offset_rounded_box(float hx, float hy, tb_vec2 center, float angle, float radius, tb_polygon* out);
+/* The polygon placed by xf: vertices and centroid transformed, normals
+ * rotated, radius kept. out may be polygon. Errors: NULL, a polygon the shape
+ * functions refuse or a bad transform (TB_ERR_INVALID_ARGUMENT), a result
+ * that collapses in float far out (TB_ERR_DEGENERATE_POLYGON); on error out
+ * is not written. */
+tb_result tb_transform_polygon(const tb_polygon* polygon, tb_transform xf, tb_polygon* out);
+
+/* ------------------------------------------------------------- distance -- */
+
+/* Distance, shape cast and time of impact of convex shapes seen as proxies
+ * (tb_shape_proxy: a core of 1 to TB_MAX_POLYGON_VERTICES points inflated by a
+ * radius). The points need not be a hull: GJK only takes support points, so
+ * interior and repeated points are harmless. A proxy is good when its count is
+ * in 1..TB_MAX_POLYGON_VERTICES, its radius >= 0 and its points and radius
+ * finite and within TB_MAX_LENGTH; the functions below refuse any other
+ * (TB_ERR_INVALID_ARGUMENT), and transforms as the geometry queries do. They
+ * return TB_OK or the error, and always write their output: on error a miss
+ * (no hit, distance FLT_MAX, state TB_TOI_FAILED at fraction 0). */
+
+/* A proxy of count points and radius, in the caller's frame. On bad input
+ * (NULL points, count outside 1..TB_MAX_POLYGON_VERTICES, a point or radius
+ * not finite, negative or beyond TB_MAX_LENGTH) a proxy of count 0, which
+ * every query refuses, and the error. */
+tb_shape_proxy tb_make_proxy(const tb_vec2* points, int count, float radius);
+/* The same with each point turned by angle (within TB_MAX_ANGLE) and then
+ * moved by position; errors as tb_make_proxy, and a bad position or angle. */
+tb_shape_proxy tb_make_offset_proxy(const tb_vec2* points, int count, float radius, tb_vec2 position, float angle);
+/* The proxies of the geometry types, in the geometry's own frame (a circle is
+ * 1 point, a capsule or segment 2, a polygon its vertices). Refused geometry
+ * (as for the geometry queries) gives a proxy of count 0 and the error. */
+tb_shape_proxy tb_make_circle_proxy(const tb_circle* circle);
+tb_shape_proxy tb_make_capsule_proxy(const tb_capsule* capsule);
+tb_shape_proxy tb_make_segment_proxy(const tb_segment* segment);
+tb_shape_proxy tb_make_polygon_proxy(const tb_polygon* polygon);
+
+typedef struct tb_segment_distance_output {
+  tb_vec2 closest1, closest2; /* closest points on segment 1 and segment 2 */
+  float fraction1, fraction2; /* closest_i = p_i + fraction_i (q_i - p_i), in [0, 1] */
+  float distance_sq;          /* |closest2 - closest1|^2 */
+} tb_segment_distance_output;
+
+/* Closest points of segments p1-q1 and p2-q2 (either may have zero length).
+ * Parallel overlapping segments have a whole family of closest pairs: the one
+ * in the middle of the overlap is returned, so it does not jump between ends.
+ * A point not finite or beyond TB_MAX_LENGTH is an error (TB_ERR_INVALID_ARGUMENT):
+ * the result is then zero but distance_sq FLT_MAX. */
+tb_segment_distance_output tb_segment_distance(tb_vec2 p1, tb_vec2 q1, tb_vec2 p2, tb_vec2 q2);
+
+/* Warm start of tb_shape_distance: the vertex indices of the last simplex.
+ * Zero it (count = 0) before the first call for a pair of proxies and pass it
+ * to every later call for that pair; each call updates it. A cache that does
+ * not fit the proxies (indices beyond their counts) is ignored (cold start). */
+typedef struct tb_simplex_cache {
+  uint8_t count;
+  uint8_t index_a[3];
+  uint8_t index_b[3];
+} tb_simplex_cache;
+
+typedef struct tb_distance_input {
+  tb_shape_proxy proxy_a, proxy_b; /* each in its own frame */
+  tb_transform xf_a, xf_b;         /* each proxy's frame to world */
+} tb_distance_input;
+
+/* Distance between the rounded shapes (radii included), clamped at 0. With the
+ * surfaces apart, point_a and point_b lie on the two surfaces and normal is
+ * the unit direction from point_a to point_b. When the rounded surfaces
+ * overlap but the cores do not, both points are the midpoint of the two
+ * surface points and normal is still the direction between the cores; when
+ * the cores overlap, both points are a common point of the cores and normal
+ * is zero. */
+typedef struct tb_distance_output {
+  tb_vec2 point_a, point_b; /* world */
+  tb_vec2 normal;           /* unit, from A to B; zero when the cores overlap */
+  float distance;           /* >= 0 */
+  int iterations;           /* support point evaluations */
+  int simplex_count;        /* 1 vertex, 2 edge, 3 overlap of the cores */
+} tb_distance_output;
+
+/* GJK distance between two placed proxies, computed in A's frame, so that far
+ * from the origin only their relative placement counts. cache may be NULL. */
+tb_result tb_shape_distance(const tb_distance_input* input, tb_simplex_cache* cache, tb_distance_output* output);
+
+/* The tolerance (metres) to which shape casts converge: at the reported
+ * fraction the gap between the rounded surfaces is in [0, TB_CAST_TOLERANCE]. */
+#define TB_CAST_TOLERANCE 1.0e-4f
+
+typedef struct tb_shape_cast_input {
+  tb_shape_proxy proxy_a, proxy_b; /* each in its own frame */
+  tb_transform xf_a, xf_b;         /* placement at the start of the cast */
+  tb_vec2 translation_b;           /* world translation of B over the cast (A stays) */
+} tb_shape_cast_input;
+
+/* Sweeps B by fraction * translation_b, fraction in [0, 1], without rotation
+ * (translation_b finite, each component within TB_MAX_LENGTH). hit is the
+ * first fraction at which the rounded shapes come within TB_CAST_TOLERANCE,
+ * never past the true contact; point is the contact point on A's surface and
+ * normal A's surface normal there, towards B. Shapes that already touch or
+ * overlap hit at fraction 0 (normal zero if their cores overlap). */
+tb_result tb_shape_cast(const tb_shape_cast_input* input, tb_cast_output* output);
+
+/* The motion of a body over an interval, by its centre of mass: position and
+ * angle linear in the fraction t from t = 0 to t = 1. Points finite and within
+ * TB_MAX_LENGTH; angles finite (the engine's own sweeps carry body angles,
+ * which may wind beyond TB_MAX_ANGLE), at most TB_MAX_VALUE. */
+typedef struct tb_sweep {
+  tb_vec2 local_center; /* centre of mass in body coordinates */
+  tb_vec2 c1, c2;       /* world centre of mass at t = 0 and t = 1 */
+  float a1, a2;         /* angle at t = 0 and t = 1 (radians) */
+} tb_sweep;
+
+/* The body transform (of the body origin, not the centre) at fraction t of
+ * the sweep. No checks: the caller's sweep and t are used as they are. */
+tb_transform tb_sweep_transform(const tb_sweep* sweep, float t);
+
+typedef struct tb_toi_input {
+  tb_shape_proxy proxy_a, proxy_b; /* body coordinates */
+  tb_sweep sweep_a, sweep_b;
+  float max_fraction; /* the interval searched is [0, max_fraction], within [0, 1] */
+  /* The gap between the rounded surfaces to stop at: TB_LINEAR_SLOP is a good
+   * target, leaving room for contacts; finite and >= -(radius_a + radius_b). */
+  float target;
+  /* > 0 and finite: the gap at a hit is target +- tolerance; 0.25 *
+   * TB_LINEAR_SLOP is what the engine uses. */
+  float tolerance;
+} tb_toi_input;
+
+typedef enum tb_toi_state {
+  TB_TOI_HIT = 0,    /* the gap reaches target (within tolerance) at fraction */
+  TB_TOI_SEPARATED,  /* the gap stays above target over [0, max_fraction]; fraction = max_fraction */
+  TB_TOI_OVERLAPPED, /* already closer than target - tolerance at 0; fraction = 0 */
+  TB_TOI_FAILED      /* bad input, or no convergence: fraction is still a safe
+                        time (the gap stays above target up to it) */
+} tb_toi_state;
+
+typedef struct tb_toi_output {
+  tb_toi_state state;
+  float fraction;
+  int iterations; /* advancement steps (one GJK call each) */
+} tb_toi_output;
+
+/* Time of impact of two moving proxies by conservative advancement: never
+ * steps past the first time the gap falls to the target, also for contacts
+ * made by rotation that end again before max_fraction. */
+tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output);
+
 /* ---------------------------------------------------------------- chains -- */
 
 /* A chain: a polyline (open) or polygon outline (loop) of segments for terrain

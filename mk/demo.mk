@@ -1,28 +1,22 @@
 # make demo, make docs-images and the renderer tests (issue 5). Included by the Makefile.
 #
-# tumble-demo renders the scene catalogue headless: OSMesa (software OpenGL, no
-# display, no GPU; never also -lGL, whose symbols would clash) and libpng.
-DEMO_PKGS := osmesa libpng
-DEMO_CFLAGS = $(shell pkg-config --cflags $(DEMO_PKGS) 2>/dev/null)
-DEMO_LIBS = $(shell pkg-config --libs $(DEMO_PKGS) 2>/dev/null || echo -lOSMesa -lpng)
+# tumble-demo renders the scene catalogue headless through libtumble-render
+# (render/, include/tumble_render.h; built by the Makefile), linked statically
+# like libtumble. demos/cli_args.c holds the command-line parsing it shares
+# with the viewer.
 DEMO_BIN := $(BUILD)/tumble-demo
-RENDER_SRC := $(wildcard demos/render/*.c)
-RENDER_OBJ := $(RENDER_SRC:%.c=$(BUILD)/obj/%.o)
+DEMO_CLI_OBJ := $(BUILD)/obj/demos/cli_args.o
 
 # Mesa would otherwise write shader caches under $HOME on every run.
 DEMO_ENV := MESA_SHADER_CACHE_DISABLE=true
 
-$(BUILD)/obj/demos/render/%.o: demos/render/%.c
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) $(DEMO_CFLAGS) -c $< -o $@
-
 $(BUILD)/obj/demos/tumble_demo.o: demos/tumble_demo.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) $(DEMO_CFLAGS) -Idemos -c $< -o $@
+	$(CC) $(CFLAGS_ALL) -Idemos -c $< -o $@
 
-$(DEMO_BIN): $(BUILD)/obj/demos/tumble_demo.o $(RENDER_OBJ) $(SCENE_CATALOGUE_OBJ) $(LIB_A)
+$(DEMO_BIN): $(BUILD)/obj/demos/tumble_demo.o $(DEMO_CLI_OBJ) $(SCENE_CATALOGUE_OBJ) $(RENDER_LIB_A) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(DEMO_LIBS) $(LDLIBS_ALL)
+	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(RENDER_LIBS) $(LDLIBS_ALL)
 
 # The gallery: every scene of the catalogue, one 960x540 PNG each after 1.5 s,
 # the six performance scenes at half scale (a quarter of the bodies) so that
@@ -51,11 +45,11 @@ docs-images: deps-demo
 RENDER_TEST := $(BUILD)/tests/render/test_render
 $(BUILD)/obj/tests/render/%.o: tests/render/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) $(CHECK_CFLAGS) $(DEMO_CFLAGS) -Idemos -c $< -o $@
+	$(CC) $(CFLAGS_ALL) $(CHECK_CFLAGS) $(RENDER_CFLAGS) -Idemos -Irender -c $< -o $@
 
-$(RENDER_TEST): $(BUILD)/obj/tests/render/test_render.o $(RENDER_OBJ) $(SCENE_CATALOGUE_OBJ) $(TEST_UTIL_OBJ) $(LIB_A)
+$(RENDER_TEST): $(BUILD)/obj/tests/render/test_render.o $(SCENE_CATALOGUE_OBJ) $(TEST_UTIL_OBJ) $(RENDER_LIB_A) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(CHECK_LIBS) $(DEMO_LIBS) $(LDLIBS_ALL)
+	$(CC) $(EXTRA_CFLAGS) -o $@ $^ $(CHECK_LIBS) $(RENDER_LIBS) $(LDLIBS_ALL)
 
 # run_tests.sh runs the suite; Mesa's shader cache stays off through this wrapper.
 EXTRA_TEST_BIN += $(BUILD)/tests/render/run_test_render
@@ -65,4 +59,4 @@ $(BUILD)/tests/render/run_test_render: $(RENDER_TEST)
 	@printf '#!/bin/sh\nMESA_SHADER_CACHE_DISABLE=true exec "%s" "$$@"\n' "$(abspath $(RENDER_TEST))" > $@
 	@chmod +x $@
 
-FORMATTED += demos/render/*.c demos/render/*.h tests/render/*.c
+FORMATTED += render/*.c render/*.h include/tumble_render.h tests/render/*.c

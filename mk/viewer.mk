@@ -2,13 +2,14 @@
 #
 # tumble-viewer shows the scene catalogue in an SDL2 window with an OpenGL
 # context: SDL2 and the system's libGL (never OSMesa, whose symbols would
-# clash), and the renderer's GL drawing, camera and font from demos/render/.
+# clash), and the renderer's GL drawing, camera and font: objects of
+# libtumble-render's sources (render/), not the library, which brings OSMesa.
 # It is optional: without SDL2 (pkg-config sdl2), `make`, `make viewer` and
 # `make viewer-test` print one line and go on.
 VIEWER_BIN := $(BUILD)/tumble-viewer
 VIEWER_SRC := $(wildcard demos/viewer/*.c)
 VIEWER_OBJ := $(VIEWER_SRC:%.c=$(BUILD)/obj/%.o)
-VIEWER_RENDER_OBJ := $(patsubst %,$(BUILD)/obj/demos/render/%.o,gl_draw camera font cli_args)
+VIEWER_RENDER_OBJ := $(patsubst %,$(BUILD)/obj/render/%.o,gl_draw camera font) $(DEMO_CLI_OBJ)
 VIEWER_HAVE_SDL := $(shell pkg-config --exists sdl2 2>/dev/null && echo yes)
 VIEWER_CFLAGS = $(shell pkg-config --cflags sdl2 2>/dev/null)
 VIEWER_LIBS = $(shell pkg-config --libs sdl2 2>/dev/null) $(shell pkg-config --libs gl 2>/dev/null || echo -lGL)
@@ -23,7 +24,7 @@ viewer: $(VIEWER_BIN)
 
 $(BUILD)/obj/demos/viewer/%.o: demos/viewer/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) $(VIEWER_CFLAGS) -Idemos -c $< -o $@
+	$(CC) $(CFLAGS_ALL) $(VIEWER_CFLAGS) -I. -Idemos -c $< -o $@
 
 $(VIEWER_BIN): $(VIEWER_OBJ) $(VIEWER_RENDER_OBJ) $(SCENE_CATALOGUE_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)

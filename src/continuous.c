@@ -116,8 +116,8 @@ static toi_kind impact(const tb_shape_proxy* fixed, const tb_sweep* fixed_sweep,
     case TB_TOI_OVERLAPPED: return TOI_OVERLAPPED;
     case TB_TOI_HIT:
     case TB_TOI_FAILED: /* t is still a safe time: the gap stays above target up to it */
-      if (out.t > 0.0f) {
-        *t = out.t;
+      if (out.fraction > 0.0f) {
+        *t = out.fraction;
         return TOI_IMPACT;
       }
       return TOI_AT_START;

@@ -31,7 +31,7 @@ static bool proxy_ok(const tb_shape_proxy* p) {
 
 /* A transform must place things within the world limits and rotate without
  * scaling (a non-unit rotation would silently scale every shape). */
-static bool transform_ok(tb_transform xf) {
+bool tb_transform_ok(tb_transform xf) {
   if (!tb_point_ok(xf.p) || !tb_finite(xf.q.c) || !tb_finite(xf.q.s)) return false;
   return fabsf(xf.q.c * xf.q.c + xf.q.s * xf.q.s - 1.0f) <= 1e-3f;
 }
@@ -43,24 +43,25 @@ static bool sweep_ok(const tb_sweep* s) {
 
 /* ---------------------------------------------------------------- proxies -- */
 
-tb_shape_proxy tb_make_proxy(const tb_vec2* points, int count, float radius) {
+/* Checks and copies the points; fn names the public function called. */
+static tb_shape_proxy make_proxy(const char* fn, const tb_vec2* points, int count, float radius) {
   tb_shape_proxy proxy;
   memset(&proxy, 0, sizeof proxy);
   if (points == NULL) {
-    tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_make_proxy: points is NULL");
+    tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "%s: points is NULL", fn);
     return proxy;
   }
   if (count < 1 || count > TB_MAX_POLYGON_VERTICES) {
-    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_proxy: count %d is not in 1..TB_MAX_POLYGON_VERTICES", count);
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: count %d is not in 1..TB_MAX_POLYGON_VERTICES", fn, count);
     return proxy;
   }
   if (!(radius >= 0.0f) || !tb_length_ok(radius)) {
-    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_proxy: radius must be >= 0, finite and <= TB_MAX_LENGTH");
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: radius must be >= 0, finite and <= TB_MAX_LENGTH", fn);
     return proxy;
   }
   for (int i = 0; i < count; ++i) {
     if (!tb_point_ok(points[i])) {
-      tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_make_proxy: point %d is not finite or beyond TB_MAX_LENGTH", i);
+      tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: point %d is not finite or beyond TB_MAX_LENGTH", fn, i);
       return proxy;
     }
     proxy.points[i] = points[i];
@@ -68,6 +69,33 @@ tb_shape_proxy tb_make_proxy(const tb_vec2* points, int count, float radius) {
   proxy.count = count;
   proxy.radius = radius;
   return proxy;
+}
+
+tb_shape_proxy tb_make_proxy(const tb_vec2* points, int count, float radius) {
+  return make_proxy(__func__, points, count, radius);
+}
+
+/* The placed points must stay within TB_MAX_LENGTH like any proxy point. */
+tb_shape_proxy tb_make_offset_proxy(const tb_vec2* points, int count, float radius, tb_vec2 position, float angle) {
+  const char* fn = __func__;
+  tb_shape_proxy proxy;
+  memset(&proxy, 0, sizeof proxy);
+  if (!tb_point_ok(position)) {
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: position is not finite or beyond TB_MAX_LENGTH", fn);
+    return proxy;
+  }
+  if (tb_check_angle(NULL, fn, "angle", angle) != TB_OK) return proxy;
+  tb_shape_proxy local = make_proxy(fn, points, count, radius);
+  if (local.count == 0) return proxy;
+  tb_transform xf = {position, angle == 0.0f ? (tb_rot){1.0f, 0.0f} : tb_make_rot(angle)};
+  for (int i = 0; i < local.count; ++i) {
+    local.points[i] = tb_transform_point(xf, local.points[i]);
+    if (!tb_point_ok(local.points[i])) {
+      tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: placed point %d lies beyond TB_MAX_LENGTH", fn, i);
+      return proxy;
+    }
+  }
+  return local;
 }
 
 static tb_shape_proxy bad_proxy(const char* fn, const char* why) {
@@ -122,7 +150,7 @@ static float point_segment_fraction(tb_vec2 p, tb_vec2 a, tb_vec2 b) {
  * one of them, so four point-segment distances settle every other case. This
  * avoids the ill-conditioned 2x2 solve of the classic method for near-parallel
  * segments, whose error grows like length * angle / epsilon. */
-tb_segment_distance_output tb_segment_distance(tb_vec2 p1, tb_vec2 q1, tb_vec2 p2, tb_vec2 q2) {
+tb_segment_distance_output tb_segment_distance_unchecked(tb_vec2 p1, tb_vec2 q1, tb_vec2 p2, tb_vec2 q2) {
   tb_segment_distance_output out;
   tb_vec2 d1 = tb_sub(q1, p1), d2 = tb_sub(q2, p2);
 
@@ -175,6 +203,17 @@ tb_segment_distance_output tb_segment_distance(tb_vec2 p1, tb_vec2 q1, tb_vec2 p
   out.closest2 = tb_mul_add(p2, out.fraction2, d2);
   out.distance_sq = tb_distance_sq(out.closest1, out.closest2);
   return out;
+}
+
+tb_segment_distance_output tb_segment_distance(tb_vec2 p1, tb_vec2 q1, tb_vec2 p2, tb_vec2 q2) {
+  if (!tb_point_ok(p1) || !tb_point_ok(q1) || !tb_point_ok(p2) || !tb_point_ok(q2)) {
+    tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_segment_distance: a point is not finite or beyond TB_MAX_LENGTH");
+    tb_segment_distance_output out;
+    memset(&out, 0, sizeof out);
+    out.distance_sq = FLT_MAX;
+    return out;
+  }
+  return tb_segment_distance_unchecked(p1, q1, p2, q2);
 }
 
 /* ----------------------------------------------------------------- simplex -- */
@@ -447,7 +486,7 @@ tb_result tb_shape_distance(const tb_distance_input* input, tb_simplex_cache* ca
   if (input == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_shape_distance: input is NULL");
   if (!proxy_ok(&input->proxy_a) || !proxy_ok(&input->proxy_b))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_shape_distance: bad proxy (count, radius or points)");
-  if (!transform_ok(input->xf_a) || !transform_ok(input->xf_b))
+  if (!tb_transform_ok(input->xf_a) || !tb_transform_ok(input->xf_b))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_shape_distance: transform is not finite or not a rotation");
 
   const tb_shape_proxy* a = &input->proxy_a;
@@ -497,7 +536,7 @@ tb_result tb_shape_cast(const tb_shape_cast_input* input, tb_cast_output* output
   if (input == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_shape_cast: input is NULL");
   if (!proxy_ok(&input->proxy_a) || !proxy_ok(&input->proxy_b))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_shape_cast: bad proxy (count, radius or points)");
-  if (!transform_ok(input->xf_a) || !transform_ok(input->xf_b))
+  if (!tb_transform_ok(input->xf_a) || !tb_transform_ok(input->xf_b))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_shape_cast: transform is not finite or not a rotation");
   if (!tb_point_ok(input->translation_b))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_shape_cast: translation is not finite or too long");
@@ -603,7 +642,7 @@ static float sweep_reach(const tb_shape_proxy* p, tb_vec2 local_center) {
 tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
   if (output == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_time_of_impact: output is NULL");
   output->state = TB_TOI_FAILED;
-  output->t = 0.0f;
+  output->fraction = 0.0f;
   output->iterations = 0;
   if (input == NULL) return tb_fail(NULL, TB_ERR_NULL_ARGUMENT, "tb_time_of_impact: input is NULL");
   const tb_shape_proxy* a = &input->proxy_a;
@@ -614,8 +653,8 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_time_of_impact: sweep is not finite or out of range");
   const float radius = a->radius + b->radius;
   const float target = input->target, tol = input->tolerance;
-  if (!(input->t_max >= 0.0f && input->t_max <= 1.0f))
-    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_time_of_impact: t_max must be in [0, 1]");
+  if (!(input->max_fraction >= 0.0f && input->max_fraction <= 1.0f))
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_time_of_impact: max_fraction must be in [0, 1]");
   if (!tb_length_ok(target) || !(target + radius >= 0.0f))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT,
                    "tb_time_of_impact: target must be finite and >= -(radius_a + radius_b)");
@@ -627,7 +666,7 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
   const tb_vec2 dv = tb_sub(tb_sub(sa->c2, sa->c1), tb_sub(sb->c2, sb->c1));
   const float spin = fabsf(sa->a2 - sa->a1) * sweep_reach(a, sa->local_center) +
                      fabsf(sb->a2 - sb->a1) * sweep_reach(b, sb->local_center);
-  const float t_max = input->t_max;
+  const float t_max = input->max_fraction;
 
   tb_simplex_cache cache = {0};
   tb_vec2 pb[TB_MAX_POLYGON_VERTICES];
@@ -641,14 +680,14 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
     if (gap < target + tol) {
       if (gap >= target - tol) {
         output->state = TB_TOI_HIT;
-        output->t = t;
+        output->fraction = t;
       } else if (t == 0.0f) {
         output->state = TB_TOI_OVERLAPPED;
-        output->t = 0.0f;
+        output->fraction = 0.0f;
       } else {
         /* Stepped past the target: only rounding can do this. */
         output->state = TB_TOI_FAILED;
-        output->t = t_safe;
+        output->fraction = t_safe;
       }
       return TB_OK;
     }
@@ -660,12 +699,12 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
     if (!(t < t_max)) break; /* gap >= target all the way to t_max */
     if (iter == TOI_MAX_ITERATIONS) {
       output->state = TB_TOI_FAILED;
-      output->t = t;
+      output->fraction = t;
       return TB_OK;
     }
   }
   output->state = TB_TOI_SEPARATED;
-  output->t = t_max;
+  output->fraction = t_max;
   return TB_OK;
 }
 
@@ -812,7 +851,7 @@ static tb_result ray_begin(const char* fn, const tb_ray_input* ray, const void* 
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: ray is not finite or beyond TB_MAX_LENGTH", fn);
   if (!(ray->max_fraction >= 0.0f) || !tb_value_ok(ray->max_fraction))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: max_fraction must be >= 0 and finite", fn);
-  if (!transform_ok(xf))
+  if (!tb_transform_ok(xf))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: transform is not finite or not a rotation", fn);
   local->o = tb_inv_transform_point(xf, ray->origin);
   local->d = tb_inv_rotate(xf.q, ray->translation);

@@ -178,7 +178,7 @@ bool tb_shape_geom_contains(const tb_shape* s, tb_transform xf, tb_vec2 point) {
     }
     case TB_SHAPE_CAPSULE: {
       const tb_capsule* c = &s->geom.capsule;
-      return tb_segment_distance(p, p, c->center1, c->center2).distance_sq <= c->radius * c->radius;
+      return tb_segment_distance_unchecked(p, p, c->center1, c->center2).distance_sq <= c->radius * c->radius;
     }
     case TB_SHAPE_SEGMENT:
     case TB_SHAPE_CHAIN_SEGMENT: return false;
@@ -196,7 +196,7 @@ bool tb_shape_geom_contains(const tb_shape* s, tb_transform xf, tb_vec2 point) {
   float r2 = poly->radius * poly->radius;
   for (int i = 0; i < poly->count; ++i) {
     tb_vec2 a = poly->vertices[i], b = poly->vertices[i + 1 < poly->count ? i + 1 : 0];
-    if (tb_segment_distance(p, p, a, b).distance_sq <= r2) return true;
+    if (tb_segment_distance_unchecked(p, p, a, b).distance_sq <= r2) return true;
   }
   return false;
 }

@@ -181,3 +181,11 @@ tb_result tb_make_rounded_box(float hx, float hy, float radius, tb_polygon* out)
   if (r == TB_OK) out->radius = radius;
   return r;
 }
+
+tb_result tb_make_offset_rounded_box(float hx, float hy, tb_vec2 center, float angle, float radius, tb_polygon* out) {
+  if (radius < 0.0f || !tb_length_ok(radius))
+    return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: radius %g must be >= 0 and finite", __func__, (double)radius);
+  tb_result r = make_box(__func__, hx, hy, center, angle, out);
+  if (r == TB_OK) out->radius = radius;
+  return r;
+}

@@ -72,6 +72,8 @@ typedef struct tb_jt_node {
   int a, b;        /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
   double d[3][3];  /* D, then D^-1 */
   double hp[3][3]; /* H_{i,parent}: dof x the parent's dof */
+  double gk[3][3]; /* joint: the compliance G = g K_c */
+  double stiff;    /* body: the geometric stiffness added to its inertia */
   double y[3];     /* right-hand side, then the solution */
   tb_rigid_rows rows;
 } tb_jt_node;
@@ -124,6 +126,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       !tb_array_reserve((void**)&t->body_scratch, &t->body_capacity, 2 * bodies, sizeof *t->body_scratch) ||
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges))
     return false;
+  t->factored_for = -1;
   float hw = TB_TREE_H_OMEGA;
   t->softness = tb_make_softness(hw * ctx->inv_h / TB_TWO_PI_F, w->joint_damping_ratio, ctx->h);
 
@@ -260,7 +263,8 @@ static void inv_mass_times(const tb_solver_body* s, const float j[3], double out
 
 /* ---- the solve -------------------------------------------------------------- */
 
-static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double g, double bias) {
+/* A joint's rows at the current positions, its block of D (-G) and G itself. */
+static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double g) {
   tb_joint* j = tb_joint_at(w, n->ref);
   const tb_solver_body* a = &ctx->states[j->solver_a];
   const tb_solver_body* b = &ctx->states[j->solver_b];
@@ -275,44 +279,36 @@ static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double 
   for (int r = 0; r < k; ++r) {
     const float* ja = n->rows.ja[r];
     const float* jb = n->rows.jb[r];
-    double cdot = (double)jb[0] * b->v.x + (double)jb[1] * b->v.y + (double)jb[2] * b->w -
-                  ((double)ja[0] * a->v.x + (double)ja[1] * a->v.y + (double)ja[2] * a->w);
-    double compliant = 0.0;
     for (int s = 0; s < k; ++s) {
       double kc = 0.0;
       for (int c = 0; c < 3; ++c) kc += ja[c] * ma[s][c] + jb[c] * mb[s][c];
       n->d[r][s] = -g * kc;
-      compliant += g * kc * (double)*n->rows.impulse[s];
+      n->gk[r][s] = g * kc;
     }
-    n->y[r] = cdot + bias * (double)n->rows.c[r] + compliant;
   }
 }
 
-void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
+/* The factorisation of the system at the current positions: every block and
+ * D^-1 (children first). It depends on the positions (the rows) and on the
+ * pass kind (compliance, geometric stiffness), not on the velocities, so the
+ * relax passes of one substep share it (see tb_joint_tree_solve). */
+static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
-  if (t->node_count == 0) return;
   double g = use_bias ? (double)t->softness.impulse_scale / (double)t->softness.mass_scale : TB_TREE_RELAX_COMPLIANCE;
-  double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
-  for (int i = t->body_nodes; i < t->node_count; ++i) init_joint(w, ctx, &t->nodes[i], g, bias);
+  for (int i = t->body_nodes; i < t->node_count; ++i) init_joint(w, ctx, &t->nodes[i], g);
   for (int i = 0; i < t->body_nodes; ++i) {
     tb_jt_node* n = &t->nodes[i];
     const tb_solver_body* s = &ctx->states[n->ref];
-    double twist = 0.0, torque = 0.0; /* h k (the rows' r . p) and tau */
+    double twist = 0.0; /* h k (the rows' r . p) */
     for (int e = 0; e < n->count; ++e) {
       const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
-      bool side_a = joint->a == i;
-      twist += side_a ? joint->rows.twist_a : joint->rows.twist_b;
-      for (int r = 0; r < joint->dof; ++r)
-        torque += side_a ? -(double)joint->rows.ja[r][2] * *joint->rows.impulse[r]
-                         : (double)joint->rows.jb[r][2] * *joint->rows.impulse[r];
+      twist += joint->a == i ? joint->rows.twist_a : joint->rows.twist_b;
     }
-    /* geometric stiffness beyond the inertia (file comment); tau: the warm start's torque */
-    double stiff = use_bias ? fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0) : 0.0;
+    /* geometric stiffness beyond the inertia (file comment) */
+    n->stiff = use_bias ? fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0) : 0.0;
     memset(n->d, 0, sizeof n->d);
     n->d[0][0] = n->d[1][1] = 1.0 / (double)s->inv_mass;
-    n->d[2][2] = 1.0 / (double)s->inv_inertia + stiff;
-    n->y[0] = n->y[1] = 0.0;
-    n->y[2] = -stiff * (double)s->inv_inertia * torque;
+    n->d[2][2] = 1.0 / (double)s->inv_inertia + n->stiff;
   }
   /* H_{i,parent} of every child */
   for (int i = 0; i < t->node_count; ++i) {
@@ -328,25 +324,69 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
         for (int c = 0; c < joint->dof; ++c) n->hp[r][c] = block[c][r];
     }
   }
-  /* factor and forward substitution, children first */
+  /* D_p -= H_ip^T D_i^-1 H_ip, children first */
   for (int q = t->node_count - 1; q >= 0; --q) {
     tb_jt_node* n = &t->nodes[t->order[q]];
     invert(n->d, n->dof);
     if (n->parent < 0) continue;
     tb_jt_node* p = &t->nodes[n->parent];
-    double dh[3][3] = {{0.0}}, dy[3] = {0.0}; /* D^-1 H_{i,p} and D^-1 y_i */
-    for (int r = 0; r < n->dof; ++r) {
-      for (int s = 0; s < n->dof; ++s) dy[r] += n->d[r][s] * n->y[s];
+    double dh[3][3] = {{0.0}}; /* D_i^-1 H_ip */
+    for (int r = 0; r < n->dof; ++r)
       for (int c = 0; c < p->dof; ++c)
         for (int s = 0; s < n->dof; ++s) dh[r][c] += n->d[r][s] * n->hp[s][c];
-    }
-    for (int c = 0; c < p->dof; ++c) {
-      for (int r = 0; r < n->dof; ++r) p->y[c] -= n->hp[r][c] * dy[r];
+    for (int c = 0; c < p->dof; ++c)
       for (int e = 0; e < p->dof; ++e)
         for (int r = 0; r < n->dof; ++r) p->d[c][e] -= n->hp[r][c] * dh[r][e];
+  }
+}
+
+/* The right-hand sides at the current velocities and impulses, and the two
+ * substitutions through the factorisation. */
+static void substitute(tb_world* w, tb_step_context* ctx, bool use_bias) {
+  tb_joint_tree* t = &w->joint_tree;
+  double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
+  for (int i = t->body_nodes; i < t->node_count; ++i) {
+    tb_jt_node* n = &t->nodes[i];
+    const tb_joint* j = tb_joint_at(w, n->ref);
+    const tb_solver_body* a = &ctx->states[j->solver_a];
+    const tb_solver_body* b = &ctx->states[j->solver_b];
+    for (int r = 0; r < n->dof; ++r) {
+      const float* ja = n->rows.ja[r];
+      const float* jb = n->rows.jb[r];
+      double cdot = (double)jb[0] * b->v.x + (double)jb[1] * b->v.y + (double)jb[2] * b->w -
+                    ((double)ja[0] * a->v.x + (double)ja[1] * a->v.y + (double)ja[2] * a->w);
+      double compliant = 0.0;
+      for (int s = 0; s < n->dof; ++s) compliant += n->gk[r][s] * (double)*n->rows.impulse[s];
+      n->y[r] = cdot + bias * (double)n->rows.c[r] + compliant;
     }
   }
-  /* back substitution, parents first: y becomes the solution */
+  for (int i = 0; i < t->body_nodes; ++i) {
+    tb_jt_node* n = &t->nodes[i];
+    n->y[0] = n->y[1] = n->y[2] = 0.0;
+    if (n->stiff == 0.0) continue;
+    /* the warm start turned the body by I^-1 tau with the plain inertia */
+    double torque = 0.0;
+    for (int e = 0; e < n->count; ++e) {
+      const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
+      bool side_a = joint->a == i;
+      for (int r = 0; r < joint->dof; ++r)
+        torque += side_a ? -(double)joint->rows.ja[r][2] * *joint->rows.impulse[r]
+                         : (double)joint->rows.jb[r][2] * *joint->rows.impulse[r];
+    }
+    n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
+  }
+  /* forward, children first: y_p -= H_ip^T D_i^-1 y_i */
+  for (int q = t->node_count - 1; q >= 0; --q) {
+    const tb_jt_node* n = &t->nodes[t->order[q]];
+    if (n->parent < 0) continue;
+    tb_jt_node* p = &t->nodes[n->parent];
+    double dy[3] = {0.0};
+    for (int r = 0; r < n->dof; ++r)
+      for (int s = 0; s < n->dof; ++s) dy[r] += n->d[r][s] * n->y[s];
+    for (int c = 0; c < p->dof; ++c)
+      for (int r = 0; r < n->dof; ++r) p->y[c] -= n->hp[r][c] * dy[r];
+  }
+  /* back, parents first: y becomes the solution */
   for (int q = 0; q < t->node_count; ++q) {
     tb_jt_node* n = &t->nodes[t->order[q]];
     double rhs[3] = {n->y[0], n->y[1], n->y[2]};
@@ -371,4 +411,13 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
     const tb_jt_node* n = &t->nodes[i];
     for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] += (float)n->y[r];
   }
+}
+
+void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
+  tb_joint_tree* t = &w->joint_tree;
+  if (t->node_count == 0) return;
+  /* the relax passes after one position update see the same rows */
+  if (use_bias || t->factored_for != ctx->position_updates) factor(w, ctx, use_bias);
+  t->factored_for = use_bias ? -1 : ctx->position_updates;
+  substitute(w, ctx, use_bias);
 }

@@ -22,6 +22,7 @@ typedef struct tb_joint_tree {
   int* edges; /* per body node: its constraint nodes (CSR, first[] in body nodes) */
   int edge_capacity;
   tb_softness softness; /* of the biased pass */
+  int factored_for;     /* the relax passes' factorisation is of this position update (-1: none) */
 } tb_joint_tree;
 
 struct tb_world;

@@ -301,6 +301,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     integrate_positions(w, &ctx, motions);
     tb_contact_solver_update_arms(w, &ctx);
     ctx.bodies_moved = true;
+    ctx.position_updates += 1;
     float change = relax_pass(w, &ctx, sub, 0);
     for (int pass = 1; pass < w->relax_iterations && change > TB_RELAX_TOLERANCE; ++pass)
       change = relax_pass(w, &ctx, sub, pass);

@@ -62,6 +62,7 @@ typedef struct tb_step_context {
   /* the position update moved the bodies since the contact solver last
    * measured how far they slid along their contacts (cleared by that) */
   bool bodies_moved;
+  int position_updates; /* counts the position updates of this step */
 } tb_step_context;
 
 /* The speed caps (tumble.h, maximum_linear_speed) hold for every moving body

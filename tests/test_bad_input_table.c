@@ -1,6 +1,7 @@
 /* Bad input, table-driven (issue 7): the calls tests/test_bad_input.c does not
- * cover (joints, chains, queries, world settings, polygons, collision, sleep and
- * contact getters), each with every bad value of its tables. Each rejected call
+ * cover (joints, chains, queries, world settings, polygons, collision, geometry
+ * and distance queries, sleep and contact getters), each with every bad value
+ * of its tables. Each rejected call
  * returns its documented error, names the argument in tb_last_error(), and
  * leaves tb_world_hash and the counts as they were. Also: stale and foreign
  * handles, calls into the world from inside callbacks, and a NaN from the
@@ -726,6 +727,262 @@ START_TEST(mass_and_collide_functions) {
   ck_assert_int_eq(tb_last_result(), TB_OK);
 }
 END_TEST
+
+/* ---- geometry queries, proxies, distance, casts, TOI, hulls (issue 24) ------ */
+
+/* A refused call of the geometry and distance API: `code` recorded, `word` in
+ * the message, the documented harmless result (`ok`, about what `stmt`
+ * declared) and the world untouched. */
+#define REFUSED(stmt, code, word, ok)                                                                              \
+  do {                                                                                                             \
+    tb_clear_error();                                                                                              \
+    stmt;                                                                                                          \
+    ck_assert_msg(tb_last_result() == (code), "%s: got %s, want %s (%s)", #stmt, tb_result_name(tb_last_result()), \
+                  tb_result_name(code), tb_last_error());                                                          \
+    ck_assert_msg(strstr(tb_last_error(), (word)) != NULL, "%s: message '%s' lacks '%s'", #stmt, tb_last_error(),  \
+                  (word));                                                                                         \
+    ck_assert_msg((ok), "%s: not the documented result on error", #stmt);                                          \
+    assert_unchanged(#stmt);                                                                                       \
+  } while (0)
+
+static bool zero_box(tb_aabb b) { return b.lower.x == 0 && b.lower.y == 0 && b.upper.x == 0 && b.upper.y == 0; }
+static bool zero_vec(tb_vec2 v) { return v.x == 0 && v.y == 0; }
+static bool missed(tb_result r, tb_result code, const tb_cast_output* o) {
+  return r == code && !o->hit && o->fraction == 0 && zero_vec(o->point) && zero_vec(o->normal);
+}
+
+/* Every query on one placed geometry (aabb, point test, closest point, ray)
+ * refused with code and word. */
+#define REFUSED_QUERIES(kind, g, xf, pt, code, word)                                                      \
+  do {                                                                                                    \
+    REFUSED(tb_aabb b_ = tb_compute_##kind##_aabb((g), (xf)), code, word, zero_box(b_));                  \
+    REFUSED(bool in_ = tb_point_in_##kind((g), (xf), (pt)), code, word, !in_);                            \
+    REFUSED(tb_vec2 c_ = tb_closest_point_on_##kind((g), (xf), (pt)), code, word, zero_vec(c_));          \
+    tb_ray_input ray_ = {(pt), {1.0f, 0.0f}, 1.0f};                                                       \
+    tb_cast_output o_;                                                                                    \
+    REFUSED(tb_result r_ = tb_ray_cast_##kind(&ray_, (g), (xf), &o_), code, word, missed(r_, code, &o_)); \
+  } while (0)
+
+START_TEST(geometry_and_distance_calls) {
+  const tb_transform id = {{0, 0}, {1, 0}};
+  const tb_vec2 origin = {0, 0};
+  tb_circle circle = {{0, 0}, 1.0f};
+  tb_capsule capsule = {{0, 0}, {1, 0}, 0.5f};
+  tb_segment segment = {{-1, 0}, {1, 0}};
+  tb_polygon box;
+  ck_assert_int_eq(tb_make_box(1, 1, &box), TB_OK);
+  const tb_result bad = TB_ERR_INVALID_ARGUMENT, null = TB_ERR_NULL_ARGUMENT;
+
+  /* transforms and points: not finite, beyond TB_MAX_LENGTH, not a rotation */
+  for (int i = 0; i < N_BAD + 2; ++i) {
+    float x = i < N_BAD ? bad_reals[i] : (i == N_BAD ? 0.5f : 2.0f); /* 0.5, 2: not a unit rotation */
+    tb_transform bad_p = {{x, 0}, {1, 0}}, bad_q = {{0, 0}, {x, 0}};
+    tb_transform t = i < N_BAD ? bad_p : bad_q;
+    REFUSED_QUERIES(circle, &circle, t, origin, bad, "transform");
+    REFUSED_QUERIES(capsule, &capsule, bad_q, origin, bad, "transform");
+    REFUSED_QUERIES(segment, &segment, t, origin, bad, "transform");
+    REFUSED_QUERIES(polygon, &box, bad_q, origin, bad, "transform");
+    tb_polygon out = box;
+    REFUSED(tb_result r = tb_transform_polygon(&box, t, &out), bad, "transform",
+            r == bad && memcmp(&out, &box, sizeof out) == 0);
+    tb_distance_input din = {tb_make_circle_proxy(&circle), tb_make_circle_proxy(&circle), id, t};
+    tb_distance_output dout;
+    REFUSED(tb_result r = tb_shape_distance(&din, NULL, &dout), bad, "transform", r == bad && dout.distance == FLT_MAX);
+    tb_shape_cast_input cin = {din.proxy_a, din.proxy_b, t, id, {1, 0}};
+    tb_cast_output cout;
+    REFUSED(tb_result r = tb_shape_cast(&cin, &cout), bad, "transform", missed(r, bad, &cout));
+    if (i >= N_BAD) continue;
+    /* the rest take the bad number itself */
+    tb_vec2 p = {0, x};
+    REFUSED(bool in = tb_point_in_circle(&circle, id, p), bad, "point", !in);
+    REFUSED(bool in = tb_point_in_polygon(&box, id, p), bad, "point", !in);
+    REFUSED(tb_vec2 c = tb_closest_point_on_capsule(&capsule, id, p), bad, "point", zero_vec(c));
+    REFUSED(tb_vec2 c = tb_closest_point_on_segment(&segment, id, p), bad, "point", zero_vec(c));
+    tb_ray_input rays[3] = {{p, {1, 0}, 1.0f}, {origin, p, 1.0f}, {origin, {1, 0}, x}};
+    for (int k = 0; k < 3; ++k) {
+      REFUSED(tb_result r = tb_ray_cast_polygon(&rays[k], &box, id, &cout), bad, k < 2 ? "ray" : "max_fraction",
+              missed(r, bad, &cout));
+    }
+    REFUSED(tb_segment_distance_output s = tb_segment_distance(origin, p, origin, origin), bad, "point",
+            s.distance_sq == FLT_MAX && zero_vec(s.closest1));
+    REFUSED(tb_shape_proxy pr = tb_make_proxy(&p, 1, 0.0f), bad, "point 0", pr.count == 0);
+    REFUSED(tb_shape_proxy pr = tb_make_offset_proxy(&origin, 1, 0.0f, p, 0.0f), bad, "position", pr.count == 0);
+    REFUSED(tb_shape_proxy pr = tb_make_offset_proxy(&origin, 1, 0.0f, origin, x), bad, "angle", pr.count == 0);
+    cin.xf_a = id;
+    cin.translation_b = p;
+    REFUSED(tb_result r = tb_shape_cast(&cin, &cout), bad, "translation", missed(r, bad, &cout));
+    /* time of impact: sweeps, max_fraction, target, tolerance */
+    tb_sweep still = {{0, 0}, {0, 0}, {0, 0}, 0, 0};
+    tb_toi_input tin = {din.proxy_a, din.proxy_b, still, still, 1.0f, TB_LINEAR_SLOP, 0.001f};
+    tb_toi_output tout;
+    tin.sweep_b.c2 = p;
+    REFUSED(tb_result r = tb_time_of_impact(&tin, &tout), bad, "sweep",
+            r == bad && tout.state == TB_TOI_FAILED && tout.fraction == 0);
+    tin.sweep_b = still;
+    tin.sweep_a.a1 = x;
+    if (!isfinite(x)) /* angles up to TB_MAX_VALUE are accepted (body angles may wind) */
+      REFUSED(tb_result r = tb_time_of_impact(&tin, &tout), bad, "sweep", r == bad && tout.state == TB_TOI_FAILED);
+    tin.sweep_a = still;
+    tin.max_fraction = x;
+    REFUSED(tb_result r = tb_time_of_impact(&tin, &tout), bad, "max_fraction", r == bad);
+    tin.max_fraction = 1.0f;
+    tin.target = x;
+    REFUSED(tb_result r = tb_time_of_impact(&tin, &tout), bad, "target", r == bad);
+    tin.target = TB_LINEAR_SLOP;
+    /* placed polygons and boxes */
+    tb_hull hull;
+    ck_assert_int_eq(tb_compute_hull(box.vertices, 4, &hull), TB_OK);
+    REFUSED(tb_result r = tb_make_offset_polygon(&hull, p, 0.0f, &out), bad, "tb_make_offset_polygon: position",
+            r == bad && memcmp(&out, &box, sizeof out) == 0);
+    REFUSED(tb_result r = tb_make_offset_rounded_polygon(&hull, origin, x, 0.1f, &out), bad,
+            "tb_make_offset_rounded_polygon: angle", r == bad);
+    REFUSED(tb_result r = tb_make_offset_rounded_box(1, 1, p, 0.0f, 0.1f, &out), bad,
+            "tb_make_offset_rounded_box: center", r == bad);
+    REFUSED(tb_result r = tb_make_offset_rounded_box(1, 1, origin, x, 0.1f, &out), bad,
+            "tb_make_offset_rounded_box: angle", r == bad);
+    const tb_vec2 tri[3] = {{0, 0}, {1, 0}, p};
+    REFUSED(tb_result r = tb_compute_hull(tri, 3, &hull), bad, "tb_compute_hull: points[2]",
+            r == bad && hull.count == 0);
+  }
+  /* sizes: radii, tolerances, half extents */
+  for (int i = 0; i < N_BAD_NN; ++i) {
+    float x = bad_non_negatives[i];
+    tb_polygon out = box;
+    tb_hull hull;
+    ck_assert_int_eq(tb_compute_hull(box.vertices, 4, &hull), TB_OK);
+    REFUSED(tb_shape_proxy pr = tb_make_proxy(&origin, 1, x), bad, "radius", pr.count == 0);
+    REFUSED(tb_shape_proxy pr = tb_make_offset_proxy(&origin, 1, x, origin, 0.0f), bad, "radius", pr.count == 0);
+    REFUSED(tb_result r = tb_make_polygon_from_hull(&hull, x, &out), bad, "tb_make_polygon_from_hull: radius",
+            r == bad && memcmp(&out, &box, sizeof out) == 0);
+    REFUSED(tb_result r = tb_make_offset_rounded_polygon(&hull, origin, 0.0f, x, &out), bad, "radius", r == bad);
+    REFUSED(tb_result r = tb_make_offset_rounded_box(1, 1, origin, 0.0f, x, &out), bad,
+            "tb_make_offset_rounded_box: radius", r == bad);
+  }
+  for (int i = 0; i < N_BAD_SIZES; ++i) {
+    float x = bad_sizes[i];
+    tb_polygon out;
+    REFUSED(tb_result r = tb_make_offset_rounded_box(x, 1, origin, 0.0f, 0.1f, &out), bad,
+            "tb_make_offset_rounded_box: hx", r == bad);
+    REFUSED(tb_result r = tb_make_offset_rounded_box(1, x, origin, 0.0f, 0.1f, &out), bad,
+            "tb_make_offset_rounded_box: hy", r == bad);
+    tb_toi_input tin = {.proxy_a = tb_make_circle_proxy(&circle), .proxy_b = tb_make_circle_proxy(&circle)};
+    tin.sweep_b.c1 = tin.sweep_b.c2 = (tb_vec2){5, 0};
+    tin.max_fraction = 1.0f;
+    tin.tolerance = x;
+    tb_toi_output tout;
+    REFUSED(tb_result r = tb_time_of_impact(&tin, &tout), bad, "tolerance", r == bad);
+  }
+
+  /* bad geometry, refused by every query as by the shape functions */
+  tb_circle bad_circle = {{0, 0}, -1.0f};
+  tb_capsule bad_capsule = {{1, 1}, {1, 1}, 0.5f};
+  tb_segment bad_segment = {{NAN, 0}, {1, 0}};
+  tb_polygon bad_count = box, clockwise = box;
+  bad_count.count = TB_MAX_POLYGON_VERTICES + 1;
+  for (int i = 0; i < 4; ++i) clockwise.vertices[i] = box.vertices[3 - i];
+  REFUSED_QUERIES(circle, &bad_circle, id, origin, bad, "radius");
+  REFUSED_QUERIES(capsule, &bad_capsule, id, origin, bad, "coincide");
+  REFUSED_QUERIES(segment, &bad_segment, id, origin, bad, "finite");
+  REFUSED_QUERIES(polygon, &bad_count, id, origin, bad, "count");
+  REFUSED_QUERIES(polygon, &clockwise, id, origin, bad, "convex");
+  REFUSED(tb_shape_proxy pr = tb_make_circle_proxy(&bad_circle), bad, "radius", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_capsule_proxy(&bad_capsule), bad, "coincide", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_segment_proxy(&bad_segment), bad, "finite", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_polygon_proxy(&clockwise), bad, "convex", pr.count == 0);
+  tb_polygon out = box;
+  REFUSED(tb_result r = tb_transform_polygon(&bad_count, id, &out), bad, "count", r == bad);
+
+  /* NULL: each pointer of each function */
+  REFUSED_QUERIES(circle, (const tb_circle*)NULL, id, origin, null, "circle");
+  REFUSED_QUERIES(capsule, (const tb_capsule*)NULL, id, origin, null, "NULL");
+  REFUSED_QUERIES(segment, (const tb_segment*)NULL, id, origin, null, "NULL");
+  REFUSED_QUERIES(polygon, (const tb_polygon*)NULL, id, origin, null, "NULL");
+  tb_cast_output cout;
+  tb_ray_input ray = {{-5, 0}, {10, 0}, 1.0f};
+  REFUSED(tb_result r = tb_ray_cast_circle(NULL, &circle, id, &cout), null, "ray", missed(r, null, &cout));
+  REFUSED(tb_result r = tb_ray_cast_capsule(&ray, &capsule, id, NULL), null, "output", r == null);
+  REFUSED(tb_shape_proxy pr = tb_make_proxy(NULL, 1, 0.0f), null, "points", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_offset_proxy(NULL, 1, 0.0f, origin, 0.0f), null, "points", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_circle_proxy(NULL), null, "NULL", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_capsule_proxy(NULL), null, "NULL", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_segment_proxy(NULL), null, "NULL", pr.count == 0);
+  REFUSED(tb_shape_proxy pr = tb_make_polygon_proxy(NULL), null, "NULL", pr.count == 0);
+  tb_distance_input din = {tb_make_circle_proxy(&circle), tb_make_circle_proxy(&circle), id, id};
+  tb_distance_output dout;
+  REFUSED(tb_result r = tb_shape_distance(NULL, NULL, &dout), null, "input", r == null && dout.distance == FLT_MAX);
+  REFUSED(tb_result r = tb_shape_distance(&din, NULL, NULL), null, "output", r == null);
+  REFUSED(tb_result r = tb_shape_cast(NULL, &cout), null, "input", missed(r, null, &cout));
+  REFUSED(tb_result r = tb_shape_cast(NULL, NULL), null, "output", r == null);
+  tb_toi_output tout;
+  REFUSED(tb_result r = tb_time_of_impact(NULL, &tout), null, "input", r == null && tout.state == TB_TOI_FAILED);
+  REFUSED(tb_result r = tb_time_of_impact(NULL, NULL), null, "output", r == null);
+  tb_hull hull;
+  REFUSED(tb_result r = tb_compute_hull(NULL, 3, &hull), null, "tb_compute_hull: points", r == null && hull.count == 0);
+  REFUSED(tb_result r = tb_compute_hull(box.vertices, 4, NULL), null, "out", r == null);
+  ck_assert_int_eq(tb_compute_hull(box.vertices, 4, &hull), TB_OK);
+  REFUSED(tb_result r = tb_make_polygon_from_hull(NULL, 0.0f, &out), null, "hull", r == null);
+  REFUSED(tb_result r = tb_make_polygon_from_hull(&hull, 0.0f, NULL), null, "out", r == null);
+  REFUSED(tb_result r = tb_make_offset_polygon(NULL, origin, 0.0f, &out), null, "hull", r == null);
+  REFUSED(tb_result r = tb_make_offset_rounded_polygon(&hull, origin, 0.0f, 0.1f, NULL), null, "out", r == null);
+  REFUSED(tb_result r = tb_make_offset_rounded_box(1, 1, origin, 0.0f, 0.1f, NULL), null, "out", r == null);
+  REFUSED(tb_result r = tb_transform_polygon(NULL, id, &out), null, "polygon", r == null);
+  REFUSED(tb_result r = tb_transform_polygon(&box, id, NULL), null, "out", r == null);
+
+  /* counts out of range: proxies, hulls, a proxy handed in by hand */
+  const int bad_counts[] = {0, -1, TB_MAX_POLYGON_VERTICES + 1, 100};
+  tb_vec2 many[100] = {{0, 0}};
+  for (int i = 0; i < 4; ++i) {
+    int n = bad_counts[i];
+    REFUSED(tb_shape_proxy pr = tb_make_proxy(many, n, 0.0f), bad, "count", pr.count == 0);
+    REFUSED(tb_shape_proxy pr = tb_make_offset_proxy(many, n, 0.0f, origin, 1.0f), bad, "count", pr.count == 0);
+    tb_hull h = hull;
+    h.count = n;
+    REFUSED(tb_result r = tb_make_polygon_from_hull(&h, 0.0f, &out), bad, "count", r == bad);
+    REFUSED(tb_result r = tb_make_offset_polygon(&h, origin, 0.0f, &out), bad, "count", r == bad);
+    tb_distance_input d = din;
+    d.proxy_b.count = n;
+    REFUSED(tb_result r = tb_shape_distance(&d, NULL, &dout), bad, "proxy", r == bad && dout.distance == FLT_MAX);
+    tb_toi_input tin = {.proxy_a = din.proxy_a, .proxy_b = d.proxy_b};
+    tin.max_fraction = 1.0f;
+    tin.tolerance = 0.001f;
+    REFUSED(tb_result r = tb_time_of_impact(&tin, &tout), bad, "proxy", r == bad);
+  }
+
+  /* degenerate: a hull that is not one; polygons that collapse in float far out */
+  tb_hull fake = {{{-1, -1}, {1, -1}, {0, 0}, {1, 1}, {-1, 1}}, 5};
+  REFUSED(tb_result r = tb_make_polygon_from_hull(&fake, 0.0f, &out), TB_ERR_DEGENERATE_POLYGON, "not a hull",
+          r == TB_ERR_DEGENERATE_POLYGON);
+  const tb_vec2 dots[3] = {{0, 0}, {0.001f, 0}, {0, 0.001f}};
+  REFUSED(tb_result r = tb_compute_hull(dots, 3, &hull), TB_ERR_DEGENERATE_POLYGON, "tb_compute_hull: only",
+          r == TB_ERR_DEGENERATE_POLYGON && hull.count == 0);
+  tb_polygon tiny;
+  ck_assert_int_eq(tb_make_box(0.001f, 0.001f, &tiny), TB_OK);
+  tb_transform far = {{9e6f, 9e6f}, {cosf(0.3f), sinf(0.3f)}};
+  REFUSED(tb_result r = tb_transform_polygon(&tiny, far, &out), TB_ERR_DEGENERATE_POLYGON, "placed",
+          r == TB_ERR_DEGENERATE_POLYGON);
+  tb_polygon small; /* 2 cm: a hull (the corners are more than TB_LINEAR_SLOP apart) */
+  ck_assert_int_eq(tb_make_box(0.01f, 0.01f, &small), TB_OK);
+  tb_hull tiny_hull;
+  ck_assert_int_eq(tb_compute_hull(small.vertices, 4, &tiny_hull), TB_OK);
+  REFUSED(tb_result r = tb_make_offset_polygon(&tiny_hull, far.p, 0.3f, &out), TB_ERR_DEGENERATE_POLYGON, "placed",
+          r == TB_ERR_DEGENERATE_POLYGON);
+  REFUSED(tb_result r = tb_make_offset_rounded_box(0.001f, 0.001f, far.p, 0.3f, 0.1f, &out), TB_ERR_DEGENERATE_POLYGON,
+          "tb_make_offset_rounded_box", r == TB_ERR_DEGENERATE_POLYGON);
+  /* placed proxy points beyond TB_MAX_LENGTH */
+  tb_vec2 edge = {0.9f * TB_MAX_LENGTH, 0};
+  REFUSED(tb_shape_proxy pr = tb_make_offset_proxy(&edge, 1, 0.0f, edge, 0.0f), bad, "placed", pr.count == 0);
+
+  /* the good calls of these rows succeed: the refusals above were the input's */
+  tb_clear_error();
+  ck_assert(tb_point_in_circle(&circle, id, origin));
+  ck_assert_int_eq(tb_compute_hull(box.vertices, 4, &hull), TB_OK);
+  ck_assert_int_eq(tb_make_offset_polygon(&hull, origin, 0.5f, &out), TB_OK);
+  ck_assert_int_eq(tb_shape_distance(&din, NULL, &dout), TB_OK);
+  ck_assert_int_eq(tb_last_result(), TB_OK);
+}
+END_TEST
+#undef REFUSED_QUERIES
+#undef REFUSED
 
 /* ---- bodies and shapes: the calls test_bad_input.c leaves out ---------------- */
 
@@ -1739,6 +1996,7 @@ static Suite* bad_input_table_suite(void) {
   tcase_add_test(tc, make_polygon_table);
   tcase_add_test(tc, hand_made_polygon_table);
   tcase_add_test(tc, mass_and_collide_functions);
+  tcase_add_test(tc, geometry_and_distance_calls);
   tcase_add_test(tc, body_and_shape_extras);
   tcase_add_test(tc, shape_geometry_calls);
   tcase_add_test(tc, chain_calls);

@@ -727,27 +727,27 @@ START_TEST(toi_closed_forms) {
   tb_toi_output out;
   ck_assert_int_eq(tb_time_of_impact(&in, &out), TB_OK);
   ck_assert_int_eq(out.state, TB_TOI_HIT);
-  ck_assert_near(out.t, (4.0 - TB_LINEAR_SLOP) / 10.0, 0.25 * TB_LINEAR_SLOP / 10.0);
+  ck_assert_near(out.fraction, (4.0 - TB_LINEAR_SLOP) / 10.0, 0.25 * TB_LINEAR_SLOP / 10.0);
   ck_assert_int_le(out.iterations, 3);
 
-  /* t_max short of the contact: separated at t_max. */
-  in.t_max = 0.3f;
+  /* max_fraction short of the contact: separated at max_fraction. */
+  in.max_fraction = 0.3f;
   ck_assert_int_eq(tb_time_of_impact(&in, &out), TB_OK);
   ck_assert_int_eq(out.state, TB_TOI_SEPARATED);
-  ck_assert_float_eq(out.t, 0.3f);
-  in.t_max = 1.0f;
+  ck_assert_float_eq(out.fraction, 0.3f);
+  in.max_fraction = 1.0f;
 
   /* Moving apart: separated. */
   in.sweep_b = sweep_make((tb_vec2){0, 0}, (tb_vec2){0, 5}, (tb_vec2){0, 9}, 0, 0);
   ck_assert_int_eq(tb_time_of_impact(&in, &out), TB_OK);
   ck_assert_int_eq(out.state, TB_TOI_SEPARATED);
-  ck_assert_float_eq(out.t, 1.0f);
+  ck_assert_float_eq(out.fraction, 1.0f);
 
   /* Starting inside: overlapped at 0. */
   in.sweep_b = sweep_make((tb_vec2){0, 0}, (tb_vec2){0, 0.5f}, (tb_vec2){0, 9}, 0, 0);
   ck_assert_int_eq(tb_time_of_impact(&in, &out), TB_OK);
   ck_assert_int_eq(out.state, TB_TOI_OVERLAPPED);
-  ck_assert_float_eq(out.t, 0.0f);
+  ck_assert_float_eq(out.fraction, 0.0f);
 
   /* A spinning bar (half length 2, centre of mass offset in the body) with no
    * translation, 1.5 m above the ground's top: its tip reaches down at a turn of
@@ -764,8 +764,8 @@ START_TEST(toi_closed_forms) {
   ck_assert_int_eq(tb_time_of_impact(&in, &out), TB_OK);
   ck_assert_int_eq(out.state, TB_TOI_HIT);
   double t_touch = asin((1.5 - TB_LINEAR_SLOP) / 2.0) / PI;
-  ck_assert(out.t <= t_touch + 1e-6);
-  ck_assert_near(gap_at(&in, out.t), TB_LINEAR_SLOP, 0.25 * TB_LINEAR_SLOP);
+  ck_assert(out.fraction <= t_touch + 1e-6);
+  ck_assert_near(gap_at(&in, out.fraction), TB_LINEAR_SLOP, 0.25 * TB_LINEAR_SLOP);
 }
 END_TEST
 
@@ -806,21 +806,21 @@ START_TEST(toi_vs_brute_force) {
     for (int k = 0; k <= 10000 && first < 0.0; ++k)
       if (gap_at(&in, (float)k / 10000.0f) < target) first = k / 10000.0;
     bool ok;
-    double g = gap_at(&in, out.t);
+    double g = gap_at(&in, out.fraction);
     if (out.state == TB_TOI_HIT) {
       ++hits;
-      ok = g >= target - tol - 1e-5 && g <= target + tol + 1e-5 && (first < 0.0 || out.t <= first + 1e-6);
+      ok = g >= target - tol - 1e-5 && g <= target + tol + 1e-5 && (first < 0.0 || out.fraction <= first + 1e-6);
     } else if (out.state == TB_TOI_SEPARATED) {
       ++separated;
-      ok = first < 0.0 && out.t == 1.0f;
+      ok = first < 0.0 && out.fraction == 1.0f;
     } else {
       ++failed;
-      ok = out.state == TB_TOI_FAILED && (first < 0.0 || out.t <= first) && g >= target - 1e-5;
+      ok = out.state == TB_TOI_FAILED && (first < 0.0 || out.fraction <= first) && g >= target - 1e-5;
     }
     if (!ok) {
       ++bad;
-      snprintf(what, sizeof what, "sweep %d: state %d t %.6f gap %.6f, brute first %.5f", i, (int)out.state, out.t, g,
-               first);
+      snprintf(what, sizeof what, "sweep %d: state %d t %.6f gap %.6f, brute first %.5f", i, (int)out.state,
+               out.fraction, g, first);
     }
   }
   fprintf(stderr,
@@ -943,9 +943,9 @@ START_TEST(bad_input) {
   tin.tolerance = 0.0f;
   ck_assert_int_eq(tb_time_of_impact(&tin, &tout), TB_ERR_INVALID_ARGUMENT);
   tin.tolerance = 0.001f;
-  tin.t_max = 1.5f;
+  tin.max_fraction = 1.5f;
   ck_assert_int_eq(tb_time_of_impact(&tin, &tout), TB_ERR_INVALID_ARGUMENT);
-  tin.t_max = 1.0f;
+  tin.max_fraction = 1.0f;
   tin.target = -1.0f; /* below -(ra + rb) = 0 */
   ck_assert_int_eq(tb_time_of_impact(&tin, &tout), TB_ERR_INVALID_ARGUMENT);
   ck_assert_int_eq(tb_time_of_impact(NULL, &tout), TB_ERR_NULL_ARGUMENT);

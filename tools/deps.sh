@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages a make target needs, only when they are missing.
-# Usage: tools/deps.sh GROUP...   (groups: test, sanitize, demo, viewer, video, bench, fuzz, valgrind)
+# Usage: tools/deps.sh GROUP...   (groups: test, sanitize, demo (also the renderer library and make install), viewer, video, bench, fuzz, valgrind)
 # Idempotent: a package that dpkg reports as installed is never touched again.
 # The library itself needs nothing from here: only a C compiler and libm.
 set -euo pipefail
@@ -18,8 +18,8 @@ for group in "$@"; do
       add pkg-config "finds the compile and link flags of check"
       ;;
     demo)
-      add libosmesa6-dev "off-screen OpenGL rendering for the demos"
-      add libpng-dev "writes the rendered frames as PNG"
+      add libosmesa6-dev "off-screen OpenGL rendering (libtumble-render, the demos)"
+      add libpng-dev "writes the rendered pictures as PNG (libtumble-render)"
       add pkg-config "finds the compile and link flags of OSMesa and libpng"
       ;;
     viewer) add libsdl2-dev "the optional interactive viewer" ;;

@@ -1,6 +1,6 @@
 /* tumble-viewer: the scene catalogue (demos/scenes/) in an SDL2 window with an
  * OpenGL (compatibility) context, drawn through the debug draw by
- * demos/render/gl_draw.c. Pick a scene, pause, single-step, drag bodies with
+ * render/gl_draw.c. Pick a scene, pause, single-step, drag bodies with
  * a mouse joint, zoom and pan, switch what the debug draw shows. Run with
  * --help for the options and keys. Prints what happens on stdout (one line per
  * action), which the smoke test (tools/viewer_smoke.sh) reads. */
@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_args.h"
 #include "render/camera.h"
-#include "render/cli_args.h"
 #include "render/gl_draw.h"
 #include "scenes/scenes.h"
 #include "script.h"

@@ -367,11 +367,12 @@ START_TEST(toi_matches_box2d_and_brute_force) {
     b2_failed += r.state == B2D_TOI_FAILED;
     state_disagree += tb_hit != b2_hit;
     if (tb_hit) {
-      float g = signed_gap(&a, tb_sweep_transform(&sa, t.t), &b, tb_sweep_transform(&sb, t.t));
+      float g = signed_gap(&a, tb_sweep_transform(&sa, t.fraction), &b, tb_sweep_transform(&sb, t.fraction));
       tb_bad_gap += g < target - tol - 1e-5f || g > target + tol + 1e-5f;
     }
     if (first >= 0.0) {
-      tb_late += !(t.state == TB_TOI_HIT && t.t <= first + 1e-6) && !(t.state == TB_TOI_FAILED && t.t <= first);
+      tb_late +=
+          !(t.state == TB_TOI_HIT && t.fraction <= first + 1e-6) && !(t.state == TB_TOI_FAILED && t.fraction <= first);
       if (!b2_hit) {
         /* Box2D missed it: a contact that ends again before t = 1 (the known
          * limit of its root finder), or did the shapes end up closer than the
@@ -395,7 +396,7 @@ START_TEST(toi_matches_box2d_and_brute_force) {
     }
     if (tb_hit && b2_hit) {
       ++both_hits;
-      double dt = fabs((double)t.t - (double)r.t);
+      double dt = fabs((double)t.fraction - (double)r.t);
       max_dt = dmax(max_dt, dt);
       sum_dt += dt;
     }

@@ -14,6 +14,10 @@ typedef struct tbr_camera {
 /* The whole box in view, centred, with margin (a fraction of its size, e.g.
  * 0.04) on the tighter side; the other side shows more to keep the aspect. */
 tbr_camera tbr_camera_fit(tb_aabb box, float margin, int width, int height);
+/* The same fit into the part of the image below its top rows (e.g. under a
+ * caption panel); the camera still covers the whole image. top is clamped
+ * to half the height. */
+tbr_camera tbr_camera_fit_below(tb_aabb box, float margin, int width, int height, int top);
 /* Centred on target with view_width metres across, but kept inside bounds
  * along each axis where the view is smaller than bounds (no empty space
  * beyond the scene's edge). */

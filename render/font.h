@@ -6,6 +6,7 @@
 #ifndef TBR_FONT_H
 #define TBR_FONT_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #define TBR_FONT_WIDTH 5
@@ -19,5 +20,13 @@ const uint8_t* tbr_font_glyph(char c);
 int tbr_font_descent(char c);
 /* Width of the text in font pixels (no trailing gap). */
 int tbr_font_text_width(const char* text);
+
+/* The longest line tbr_font_wrap hands out. */
+#define TBR_FONT_MAX_LINE 512
+/* Copies into piece the first line of text that holds at most max_chars
+ * characters (and fits piece_size with its NUL), broken at the last space that
+ * allows it, or cut when a word alone is longer; returns how far the next line
+ * starts in text (past the spaces at the break; at its end when it all fit). */
+int tbr_font_wrap(const char* text, int max_chars, char* piece, size_t piece_size);
 
 #endif

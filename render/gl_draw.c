@@ -254,25 +254,59 @@ void tbr_gl_text(tbr_gl* gl, float x, float y, float pixel, const char* text, tb
   }
 }
 
+/* The overlay's layout: font pixels scale with the image height (one per 360
+ * rows: 2 at 720p, 1 for thumbnails), the title one larger. */
+typedef struct overlay_layout {
+  float small, big, pad, gap;
+  int width, height; /* the image */
+} overlay_layout;
+
+static overlay_layout layout_for(int width, int height) {
+  overlay_layout l;
+  l.small = fmaxf(1.0f, floorf((float)height / 360.0f + 0.5f));
+  l.big = l.small + 1.0f;
+  l.pad = 4.0f * l.small;
+  l.gap = 3.0f * l.small;
+  l.width = width;
+  l.height = height;
+  return l;
+}
+
+/* Walks the wrapped pieces of the lines: draws them when gl is not NULL;
+ * returns the panel's size (pads included); the panel's corner is at (pad, pad). */
+static tb_vec2 overlay_walk(tbr_gl* gl, const overlay_layout* l, const char* const* lines, int count) {
+  float x = 2.0f * l->pad, y = 2.0f * l->pad, text_width = 0.0f;
+  for (int i = 0; i < count; ++i) {
+    float px = i == 0 ? l->big : l->small;
+    tb_color c = i == 0 ? (tb_color){1.0f, 1.0f, 1.0f, 1.0f} : (tb_color){0.78f, 0.80f, 0.85f, 1.0f};
+    /* whole characters that fit between the panel's text margins */
+    float room = (float)l->width - 4.0f * l->pad + (float)(TBR_FONT_ADVANCE - TBR_FONT_WIDTH) * px;
+    int max_chars = (int)(room / ((float)TBR_FONT_ADVANCE * px));
+    const char* text = lines[i];
+    do {
+      char piece[TBR_FONT_MAX_LINE + 1];
+      int n = tbr_font_wrap(text, max_chars, piece, sizeof piece);
+      text += n;
+      text_width = fmaxf(text_width, (float)tbr_font_text_width(piece) * px);
+      if (gl != NULL) tbr_gl_text(gl, x, y, px, piece, c);
+      y += TBR_FONT_LINE_HEIGHT * px + l->gap;
+    } while (*text != '\0');
+  }
+  return v2(text_width + 2.0f * l->pad, y - l->gap);
+}
+
+int tbr_gl_overlay_height(const char* const* lines, int count, int width, int height) {
+  if (count <= 0) return 0;
+  overlay_layout l = layout_for(width, height);
+  return (int)ceilf(l.pad + overlay_walk(NULL, &l, lines, count).y);
+}
+
 void tbr_gl_overlay(tbr_gl* gl, const char* const* lines, int count) {
   if (count <= 0) return;
-  /* one font pixel per 360 image rows: 2 at 720p, 1 for thumbnails */
-  float small = fmaxf(1.0f, floorf((float)gl->camera.height / 360.0f + 0.5f)), big = small + 1.0f;
-  float pad = 4.0f * small, gap = 3.0f * small;
-  float width = 0.0f, height = pad;
-  for (int i = 0; i < count; ++i) {
-    float px = i == 0 ? big : small;
-    width = fmaxf(width, (float)tbr_font_text_width(lines[i]) * px);
-    height += TBR_FONT_LINE_HEIGHT * px + (i + 1 < count ? gap : pad);
-  }
-  float x = 2.0f * pad, y = 2.0f * pad;
-  tbr_gl_rect(gl, pad, pad, width + 2.0f * pad, height, (tb_color){0.0f, 0.0f, 0.0f, 0.55f});
-  for (int i = 0; i < count; ++i) {
-    float px = i == 0 ? big : small;
-    tb_color c = i == 0 ? (tb_color){1.0f, 1.0f, 1.0f, 1.0f} : (tb_color){0.78f, 0.80f, 0.85f, 1.0f};
-    tbr_gl_text(gl, x, y, px, lines[i], c);
-    y += TBR_FONT_LINE_HEIGHT * px + gap;
-  }
+  overlay_layout l = layout_for(gl->camera.width, gl->camera.height);
+  tb_vec2 size = overlay_walk(NULL, &l, lines, count);
+  tbr_gl_rect(gl, l.pad, l.pad, size.x, size.y, (tb_color){0.0f, 0.0f, 0.0f, 0.55f});
+  overlay_walk(gl, &l, lines, count);
 }
 
 static void draw_batch(const batch* b) {

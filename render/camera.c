@@ -45,3 +45,14 @@ tb_vec2 tbr_camera_to_pixel(const tbr_camera* camera, tb_vec2 world) {
   return (tb_vec2){0.5f * (float)camera->width + (world.x - camera->center.x) * ppm,
                    0.5f * (float)camera->height - (world.y - camera->center.y) * ppm};
 }
+
+tbr_camera tbr_camera_fit_below(tb_aabb box, float margin, int width, int height, int top) {
+  if (top > height / 2) top = height / 2;
+  if (top <= 0) return tbr_camera_fit(box, margin, width, height);
+  tbr_camera c = tbr_camera_fit(box, margin, width, height - top);
+  float metres_per_pixel = 2.0f * c.half_height / (float)(height - top);
+  c.center.y += 0.5f * (float)top * metres_per_pixel; /* the box's centre moves down by half the band */
+  c.half_height = 0.5f * (float)height * metres_per_pixel;
+  c.height = height;
+  return c;
+}

@@ -44,8 +44,12 @@ void tbr_gl_rect(tbr_gl* gl, float x, float y, float width, float height, tb_col
 void tbr_gl_text(tbr_gl* gl, float x, float y, float pixel, const char* text, tb_color color);
 
 /* A panel in the top-left corner: the first line large (a title), the others
- * smaller; font pixels scale with the image height. */
+ * smaller; font pixels scale with the image height. Lines longer than the
+ * image is wide are wrapped at spaces (or cut where a word alone is too long). */
 void tbr_gl_overlay(tbr_gl* gl, const char* const* lines, int count);
+/* The pixel rows from the top of a width x height image that the panel of
+ * tbr_gl_overlay covers (0 when count is 0). */
+int tbr_gl_overlay_height(const char* const* lines, int count, int width, int height);
 
 /* Draws what was batched (world first, then screen) and empties the batch.
  * false when the batch ran out of memory and some of it was dropped. */

@@ -113,3 +113,24 @@ int tbr_font_text_width(const char* text) {
   size_t n = strlen(text);
   return n == 0 ? 0 : (int)n * TBR_FONT_ADVANCE - (TBR_FONT_ADVANCE - TBR_FONT_WIDTH);
 }
+
+int tbr_font_wrap(const char* text, int max_chars, char* piece, size_t piece_size) {
+  if (max_chars < 1) max_chars = 1;
+  if ((size_t)max_chars >= piece_size) max_chars = (int)piece_size - 1;
+  int n = (int)strlen(text), take = n;
+  if (n > max_chars) {
+    take = max_chars; /* no space to break at: cut the word */
+    for (int k = max_chars; k > 0; --k) {
+      if (text[k] == ' ') {
+        take = k;
+        break;
+      }
+    }
+  }
+  int end = take;
+  while (end > 0 && text[end - 1] == ' ') --end; /* no trailing spaces */
+  memcpy(piece, text, (size_t)end);
+  piece[end] = '\0';
+  while (text[take] == ' ') ++take; /* the next piece starts at a word */
+  return take;
+}
