@@ -172,6 +172,7 @@ INSTALL_LIB = $(DESTDIR)$(PREFIX)/lib
 install: render
 	install -d $(INSTALL_INC) $(INSTALL_LIB)/pkgconfig
 	install -m 644 include/tumble.h $(DESTDIR)$(PREFIX)/include/tumble.h
+	install -m 644 include/tumble_math.h $(INSTALL_INC)/tumble_math.h
 	install -m 644 include/tumble_render.h $(INSTALL_INC)/tumble_render.h
 	install -m 644 $(LIB_A) $(INSTALL_LIB)/libtumble.a
 	install -m 755 $(LIB_SO) $(INSTALL_LIB)/libtumble.so.0
@@ -184,6 +185,7 @@ install: render
 	-@[ -z "$(DESTDIR)" ] && command -v ldconfig >/dev/null && [ "$$(id -u)" = 0 ] && ldconfig || true
 
 uninstall:
+	rm -f $(INSTALL_INC)/tumble_math.h
 	rm -f $(DESTDIR)$(PREFIX)/include/tumble.h $(INSTALL_INC)/tumble_render.h \
 	  $(INSTALL_LIB)/libtumble.a $(INSTALL_LIB)/libtumble.so $(INSTALL_LIB)/libtumble.so.0 \
 	  $(INSTALL_LIB)/libtumble-render.a $(INSTALL_LIB)/libtumble-render.so $(INSTALL_LIB)/libtumble-render.so.0 \

@@ -103,8 +103,21 @@ typedef struct graveyard {
   int world_count, body_count, shape_count, joint_count, chain_count; /* total ever buried */
 } graveyard;
 
+#define MAX_TREE_PROXIES 24
+
+/* The game's own dynamic tree (tb_dynamic_tree) and what the harness knows of it. */
+typedef struct tree_model {
+  tb_dynamic_tree* tree;
+  int32_t ids[MAX_TREE_PROXIES];
+  int32_t dead[GRAVE]; /* destroyed ids (ids may be handed out again: only until then) */
+  int count, dead_count;
+  int depth; /* nested queries */
+  struct model* owner;
+} tree_model;
+
 typedef struct model {
   world_model worlds[MAX_WORLDS];
+  tree_model tree;
   graveyard dead;
   int world_creations;
   int steps;
@@ -215,9 +228,9 @@ static void attack(world_model* wm, const char* where) {
   bool have = true; /* the target exists: a null handle is refused as stale first */
   tb_result r = TB_ERR_LOCKED;
   const char* what = "";
-  /* 24..26 (user data) only while their check is on: a refused-or-not call
+  /* 25..27 (user data) only while their check is on: a refused-or-not call
    * that changes the hash would fail the hash check below */
-  uint32_t op = next_rng(wm) % (FUZZ_CHECK_USER_DATA_LOCKED ? 27 : 24);
+  uint32_t op = next_rng(wm) % (FUZZ_CHECK_USER_DATA_LOCKED ? 28 : 25);
   switch (op) {
     case 0: {
       tb_body_def bd = tb_default_body_def();
@@ -285,10 +298,15 @@ static void attack(world_model* wm, const char* where) {
     case 21: what = "tb_world_enable_sleeping", r = tb_world_enable_sleeping(w, false); break;
     case 22: what = "tb_body_set_awake", have = wm->body_count > 0, r = tb_body_set_awake(body, false); break;
     case 23: what = "tb_world_set_maximum_linear_speed", r = tb_world_set_maximum_linear_speed(w, 1.0f); break;
-    case 24:
+    case 24: {
+      tb_circle c = {{0, 0}, 0.3f};
+      what = "tb_shape_set_circle", have = wm->shape_count > 0, r = tb_shape_set_circle(shape, &c);
+      break;
+    }
+    case 25:
       what = "tb_world_set_user_data", r = tb_world_set_user_data(w, tb_world_get_user_data(w) ? NULL : wm);
       break;
-    case 25:
+    case 26:
       what = "tb_shape_set_user_data", have = wm->shape_count > 0;
       r = tb_shape_set_user_data(shape, tb_shape_get_user_data(shape) ? NULL : wm);
       break;
@@ -547,49 +565,134 @@ static tb_shape_def shape_def(fuzz_input* in) {
   return sd;
 }
 
-static tb_result create_shape(world_model* wm, fuzz_input* in, tb_body_id body) {
-  tb_shape_def sd = shape_def(in);
-  tb_shape_id s = {0, 0, 0};
-  tb_polygon p;
+/* Geometry of any type from the input, now and then bad or degenerate. */
+typedef struct fuzz_geometry {
+  tb_shape_type type;
+  tb_circle circle;
+  tb_capsule capsule;
+  tb_segment segment;
+  tb_polygon polygon;
+} fuzz_geometry;
+
+/* false when tb_make_* refused the polygon (no world is involved then). */
+static bool make_geometry(fuzz_input* in, fuzz_geometry* g) {
   tb_result made = TB_OK;
-  bool polygon = true;
+  g->type = TB_SHAPE_POLYGON;
   switch (fuzz_u8(in) % 7) {
-    case 0: {
-      tb_circle c = {{fuzz_pos(in, -1, 1), fuzz_pos(in, -1, 1)}, fuzz_size(in, 0.02f, 2)};
-      s = tb_create_circle_shape(body, &sd, &c), polygon = false;
+    case 0:
+      g->type = TB_SHAPE_CIRCLE;
+      g->circle = (tb_circle){{fuzz_pos(in, -1, 1), fuzz_pos(in, -1, 1)}, fuzz_size(in, 0.02f, 2)};
       break;
-    }
     case 1: {
       float r = fuzz_size(in, 0.02f, 1);
-      tb_capsule c = {{fuzz_pos(in, -1, 1), 0}, {fuzz_pos(in, -1, 1), fuzz_size(in, 0, 1)}, r};
-      s = tb_create_capsule_shape(body, &sd, &c), polygon = false;
+      g->type = TB_SHAPE_CAPSULE;
+      g->capsule = (tb_capsule){{fuzz_pos(in, -1, 1), 0}, {fuzz_pos(in, -1, 1), fuzz_size(in, 0, 1)}, r};
       break;
     }
-    case 2: {
-      tb_segment g = {{fuzz_pos(in, -2, 2), fuzz_pos(in, -2, 2)}, {fuzz_pos(in, -2, 2), fuzz_pos(in, -2, 2)}};
-      s = tb_create_segment_shape(body, &sd, &g), polygon = false;
+    case 2:
+      g->type = TB_SHAPE_SEGMENT;
+      g->segment = (tb_segment){{fuzz_pos(in, -2, 2), fuzz_pos(in, -2, 2)}, {fuzz_pos(in, -2, 2), fuzz_pos(in, -2, 2)}};
       break;
-    }
     case 3: {
       tb_vec2 pts[TB_MAX_POLYGON_VERTICES + 1];
       int n = 3 + fuzz_u8(in) % (TB_MAX_POLYGON_VERTICES - 1);
       float scale = fuzz_size(in, 0.1f, 2);
       for (int i = 0; i < n; ++i) pts[i] = (tb_vec2){scale * fuzz_range(in, -1, 1), scale * fuzz_range(in, -1, 1)};
-      made = tb_make_polygon(pts, n, fuzz_u8(in) & 1 ? fuzz_size(in, 0, 0.1f) : 0.0f, &p);
+      made = tb_make_polygon(pts, n, fuzz_u8(in) & 1 ? fuzz_size(in, 0, 0.1f) : 0.0f, &g->polygon);
       break;
     }
-    case 4: made = tb_make_box(fuzz_size(in, 0.05f, 2), fuzz_size(in, 0.05f, 2), &p); break;
+    case 4: made = tb_make_box(fuzz_size(in, 0.05f, 2), fuzz_size(in, 0.05f, 2), &g->polygon); break;
     case 5:
-      made = tb_make_offset_box(fuzz_size(in, 0.05f, 1), fuzz_size(in, 0.05f, 1),
-                                (tb_vec2){fuzz_pos(in, -1, 1), fuzz_pos(in, -1, 1)}, fuzz_value(in, -4, 4), &p);
+      made =
+          tb_make_offset_box(fuzz_size(in, 0.05f, 1), fuzz_size(in, 0.05f, 1),
+                             (tb_vec2){fuzz_pos(in, -1, 1), fuzz_pos(in, -1, 1)}, fuzz_value(in, -4, 4), &g->polygon);
       break;
-    default: made = tb_make_rounded_box(fuzz_size(in, 0.05f, 1), fuzz_size(in, 0.05f, 1), fuzz_size(in, 0, 0.2f), &p);
+    default:
+      made = tb_make_rounded_box(fuzz_size(in, 0.05f, 1), fuzz_size(in, 0.05f, 1), fuzz_size(in, 0, 0.2f), &g->polygon);
   }
-  if (made != TB_OK) return TB_OK; /* refused geometry: nothing to add, no world involved */
-  if (polygon) s = tb_create_polygon_shape(body, &sd, &p);
+  return made == TB_OK;
+}
+
+static tb_result create_shape(world_model* wm, fuzz_input* in, tb_body_id body) {
+  tb_shape_def sd = shape_def(in);
+  fuzz_geometry g;
+  if (!make_geometry(in, &g)) return TB_OK; /* refused geometry: nothing to add, no world involved */
+  tb_shape_id s = {0, 0, 0};
+  switch (g.type) {
+    case TB_SHAPE_CIRCLE: s = tb_create_circle_shape(body, &sd, &g.circle); break;
+    case TB_SHAPE_CAPSULE: s = tb_create_capsule_shape(body, &sd, &g.capsule); break;
+    case TB_SHAPE_SEGMENT: s = tb_create_segment_shape(body, &sd, &g.segment); break;
+    default: s = tb_create_polygon_shape(body, &sd, &g.polygon);
+  }
   if (tb_shape_id_is_null(s)) return tb_last_result();
   add_shape(wm, s);
   return TB_OK;
+}
+
+/* A shape's geometry replaced in place (tb_shape_set_*): on success the shape
+ * has the new type and geometry, its body a finite mass. */
+static tb_result set_geometry(tb_shape_id s, fuzz_input* in) {
+  fuzz_geometry g, back;
+  if (!make_geometry(in, &g)) return tb_shape_set_polygon(s, NULL); /* refused: a NULL polygon then */
+  tb_result r, got = TB_OK;
+  switch (g.type) {
+    case TB_SHAPE_CIRCLE:
+      r = tb_shape_set_circle(s, &g.circle);
+      if (r == TB_OK) got = tb_shape_get_circle(s, &back.circle);
+      if (r == TB_OK) FUZZ_CHECK(memcmp(&back.circle, &g.circle, sizeof g.circle) == 0, "set circle: not kept");
+      break;
+    case TB_SHAPE_CAPSULE:
+      r = tb_shape_set_capsule(s, &g.capsule);
+      if (r == TB_OK) got = tb_shape_get_capsule(s, &back.capsule);
+      if (r == TB_OK) FUZZ_CHECK(memcmp(&back.capsule, &g.capsule, sizeof g.capsule) == 0, "set capsule: not kept");
+      break;
+    case TB_SHAPE_SEGMENT:
+      r = tb_shape_set_segment(s, &g.segment);
+      if (r == TB_OK) got = tb_shape_get_segment(s, &back.segment);
+      if (r == TB_OK) FUZZ_CHECK(memcmp(&back.segment, &g.segment, sizeof g.segment) == 0, "set segment: not kept");
+      break;
+    default:
+      r = tb_shape_set_polygon(s, &g.polygon);
+      if (r == TB_OK) got = tb_shape_get_polygon(s, &back.polygon);
+      if (r == TB_OK) FUZZ_CHECK(memcmp(&back.polygon, &g.polygon, sizeof g.polygon) == 0, "set polygon: not kept");
+  }
+  if (r != TB_OK) return r;
+  tb_body_id body = tb_shape_get_body(s);
+  float mass = tb_body_get_mass(body);
+  FUZZ_CHECK(got == TB_OK && tb_shape_get_type(s) == g.type, "set geometry: type %d, want %d",
+             (int)tb_shape_get_type(s), (int)g.type);
+  FUZZ_CHECK(isfinite(mass) && mass >= 0 && isfinite(tb_body_get_rotational_inertia(body)) &&
+                 (tb_body_get_type(body) != TB_DYNAMIC_BODY || mass > 0),
+             "set geometry: body mass %g", (double)mass);
+  return r;
+}
+
+/* One shape's own queries (tb_shape_test_point, _ray_cast, _get_closest_point):
+ * a contained point is its own closest point, hits lie on the ray. Returns the
+ * last refusal (TB_OK when none). */
+static tb_result shape_queries(tb_shape_id s, fuzz_input* in) {
+  tb_vec2 p = fuzz_point(in), t = {fuzz_pos(in, -30, 30), fuzz_pos(in, -30, 30)};
+  tb_clear_error();
+  bool inside = tb_shape_test_point(s, p);
+  bool point_ok = tb_last_result() == TB_OK;
+  tb_vec2 c = tb_shape_get_closest_point(s, p);
+  if (point_ok && tb_shape_is_valid(s)) {
+    float scale = 1e-4f * (1.0f + fmaxf(fabsf(p.x), fabsf(p.y)));
+    FUZZ_CHECK(fuzz_vec_finite(c), "closest point not finite");
+    if (inside)
+      FUZZ_CHECK(fabsf(c.x - p.x) <= scale && fabsf(c.y - p.y) <= scale,
+                 "a contained point (%g, %g) has another closest point (%g, %g)", (double)p.x, (double)p.y, (double)c.x,
+                 (double)c.y);
+  }
+  tb_ray_result rr = tb_shape_ray_cast(s, p, t);
+  if (rr.hit) {
+    FUZZ_CHECK(tb_shape_id_equal(rr.shape, s) && rr.fraction >= 0.0f && rr.fraction <= 1.0f &&
+                   fuzz_vec_finite(rr.point) && fuzz_vec_finite(rr.normal),
+               "shape ray hit: fraction %g", (double)rr.fraction);
+  } else {
+    FUZZ_CHECK(rr.fraction == 1.0f && tb_shape_id_is_null(rr.shape), "shape ray miss");
+  }
+  return tb_last_result();
 }
 
 static tb_body_id pick_body(world_model* wm, model* m, fuzz_input* in) {
@@ -780,7 +883,9 @@ static tb_result body_setter(tb_body_id body, fuzz_input* in) {
 }
 
 static tb_result shape_setter(tb_shape_id s, fuzz_input* in) {
-  switch (fuzz_u8(in) % 7) {
+  switch (fuzz_u8(in) % 9) {
+    case 7: return set_geometry(s, in);
+    case 8: return shape_queries(s, in);
     case 0: return tb_shape_set_density(s, fuzz_value(in, 0, 10));
     case 1: return tb_shape_set_friction(s, fuzz_value(in, 0, 2));
     case 2: return tb_shape_set_restitution(s, fuzz_value(in, 0, 1));
@@ -1243,6 +1348,151 @@ static void errors(world_model* wm) {
   FUZZ_CHECK(tb_last_result() == TB_OK && strlen(tb_last_error()) == 0, "tb_clear_error");
 }
 
+/* ---- the game's own dynamic tree ------------------------------------------- */
+
+static bool tree_has(const tree_model* tm, int32_t id) {
+  for (int i = 0; i < tm->count; ++i)
+    if (tm->ids[i] == id) return true;
+  return false;
+}
+
+/* A box from the input, now and then bad (NaN, beyond TB_MAX_LENGTH, lower > upper). */
+static tb_aabb fuzz_box(fuzz_input* in) {
+  tb_vec2 lo = fuzz_point(in);
+  float w = fuzz_size(in, 0, 10), h = fuzz_size(in, 0, 10);
+  if ((fuzz_u8(in) & 15) == 0) w = -w;
+  return (tb_aabb){lo, {lo.x + w, lo.y + h}};
+}
+
+/* Any id: a live one, a destroyed one, or garbage. */
+static int32_t fuzz_proxy(tree_model* tm, fuzz_input* in) {
+  uint8_t k = fuzz_u8(in);
+  if (tm->count > 0 && (k & 3) != 0) return tm->ids[k % tm->count];
+  if (tm->dead_count > 0 && (k & 3) == 0) return tm->dead[k % buried(tm->dead_count)];
+  static const int32_t garbage[] = {TB_NULL_PROXY, -1000, 1, 7, 1 << 20, INT32_MAX};
+  return garbage[k % 6];
+}
+
+/* Callbacks check what they are handed, try to change the tree (refused) and
+ * nest queries (allowed). */
+static void tree_attack(tree_model* tm, int32_t proxy, void* user_data) {
+  model* m = tm->owner;
+  if (m->check) {
+    FUZZ_CHECK(tree_has(tm, proxy), "the tree reported proxy %d, which is not live", (int)proxy);
+    FUZZ_CHECK(user_data == &tm->ids[0] + (proxy & 7), "the tree handed proxy %d another's user data", (int)proxy);
+  }
+  tb_dynamic_tree* t = tm->tree;
+  int count = tb_dynamic_tree_get_proxy_count(t);
+  tb_result r[5] = {
+      tb_dynamic_tree_create_proxy(t, (tb_aabb){{0, 0}, {1, 1}}, 1, NULL) == TB_NULL_PROXY ? tb_last_result() : TB_OK,
+      tb_dynamic_tree_destroy_proxy(t, proxy),
+      tb_dynamic_tree_move_proxy(t, proxy, (tb_aabb){{5, 5}, {6, 6}}, (tb_vec2){0, 0}, NULL),
+      tb_dynamic_tree_rebuild(t), tb_dynamic_tree_destroy(t)};
+  if (m->check) {
+    for (int i = 0; i < 5; ++i)
+      FUZZ_CHECK(r[i] == TB_ERR_LOCKED, "tree change %d from a callback: %s", i, tb_result_name(r[i]));
+    FUZZ_CHECK(tb_dynamic_tree_get_proxy_count(t) == count, "a refused change altered the tree");
+  }
+  tb_clear_error();
+}
+
+static bool tree_query_fn(int32_t proxy, void* user_data, void* context) {
+  tree_model* tm = context;
+  tree_attack(tm, proxy, user_data);
+  if (tm->depth < 1) {
+    tm->depth += 1;
+    tb_aabb box = tb_dynamic_tree_get_fat_aabb(tm->tree, proxy);
+    tb_result r = tb_dynamic_tree_query(tm->tree, box, UINT64_MAX, tree_query_fn, tm);
+    if (tm->owner->check) FUZZ_CHECK(r == TB_OK, "a nested tree query was refused: %s", tb_last_error());
+    tm->depth -= 1;
+  }
+  return (proxy & 3) != 3;
+}
+
+static float tree_ray_fn(const tb_dynamic_tree_ray_input* input, int32_t proxy, void* user_data, void* context) {
+  tree_model* tm = context;
+  tree_attack(tm, proxy, user_data);
+  if (tm->owner->check) FUZZ_CHECK(input->max_fraction >= 0.0f && fuzz_vec_finite(input->origin), "tree ray input");
+  static const float answers[4] = {-1.0f, 0.0f, 0.5f, 1.0f};
+  return proxy % 5 == 0 ? NAN : answers[proxy & 3] * input->max_fraction;
+}
+
+/* One call on the tree; then its invariants: it validates, and it holds
+ * exactly the proxies the harness created and did not destroy, each with its
+ * user data. */
+static tb_result dynamic_tree(model* m, fuzz_input* in) {
+  tree_model* tm = &m->tree;
+  if (tm->tree == NULL) return TB_OK;
+  tb_dynamic_tree* t = tm->tree;
+  tb_result r = TB_OK;
+  switch (fuzz_u8(in) % 8) {
+    case 0:
+    case 1: {
+      tb_aabb box = fuzz_box(in);
+      if (tm->count >= MAX_TREE_PROXIES) return TB_OK;
+      int32_t id = tb_dynamic_tree_create_proxy(t, box, fuzz_u8(in) & 1 ? 1 : 3, NULL);
+      if (id == TB_NULL_PROXY) return tb_last_result();
+      r = tb_dynamic_tree_set_user_data(t, id, &tm->ids[0] + (id & 7));
+      tm->ids[tm->count++] = id;
+      for (int i = 0; i < buried(tm->dead_count); ++i) /* handed out again: no longer dead */
+        if (tm->dead[i] == id) tm->dead[i] = TB_NULL_PROXY;
+      break;
+    }
+    case 2: {
+      int32_t id = fuzz_proxy(tm, in);
+      r = tb_dynamic_tree_destroy_proxy(t, id);
+      if (m->check) FUZZ_CHECK((r == TB_OK) == tree_has(tm, id), "destroying proxy %d: %s", (int)id, tb_result_name(r));
+      if (r == TB_OK) {
+        for (int i = 0; i < tm->count; ++i)
+          if (tm->ids[i] == id) tm->ids[i] = tm->ids[--tm->count];
+        tm->dead[tm->dead_count++ % GRAVE] = id;
+      }
+      break;
+    }
+    case 3: {
+      int32_t id = fuzz_proxy(tm, in);
+      tb_aabb box = fuzz_box(in);
+      bool reinserted = false;
+      r = tb_dynamic_tree_move_proxy(t, id, box, fuzz_vector(in, 3), &reinserted);
+      if (r == TB_OK) FUZZ_CHECK(tree_has(tm, id), "moved a proxy %d that is not live", (int)id);
+      if (r == TB_OK && m->check) {
+        tb_aabb fat = tb_dynamic_tree_get_fat_aabb(t, id);
+        FUZZ_CHECK(fat.lower.x <= box.lower.x && fat.lower.y <= box.lower.y && box.upper.x <= fat.upper.x &&
+                       box.upper.y <= fat.upper.y,
+                   "a moved proxy's fat box does not hold its box");
+      }
+      break;
+    }
+    case 4: {
+      tb_aabb box = fuzz_box(in);
+      r = tb_dynamic_tree_query(t, box, fuzz_u8(in) & 1 ? UINT64_MAX : 2, tree_query_fn, tm);
+      break;
+    }
+    case 5: {
+      tb_dynamic_tree_ray_input ray = {fuzz_point(in), fuzz_vector(in, 30), fuzz_value(in, 0, 2)};
+      r = tb_dynamic_tree_ray_cast(t, &ray, UINT64_MAX, tree_ray_fn, tm);
+      break;
+    }
+    case 6: r = tb_dynamic_tree_rebuild(t); break;
+    default: {
+      int32_t id = fuzz_proxy(tm, in);
+      r = tb_dynamic_tree_set_category_bits(t, id, fuzz_u8(in));
+      (void)tb_dynamic_tree_get_category_bits(t, id);
+    }
+  }
+  if (m->check) {
+    FUZZ_CHECK(tb_dynamic_tree_validate(t) == TB_OK, "tree invalid: %s", tb_last_error());
+    FUZZ_CHECK(tb_dynamic_tree_get_proxy_count(t) == tm->count, "tree holds %d proxies, the harness %d",
+               tb_dynamic_tree_get_proxy_count(t), tm->count);
+    for (int i = 0; i < tm->count; ++i)
+      FUZZ_CHECK(tb_dynamic_tree_get_user_data(t, tm->ids[i]) == &tm->ids[0] + (tm->ids[i] & 7), "tree user data");
+    int height = tb_dynamic_tree_get_height(t);
+    FUZZ_CHECK(height >= 0 && height <= 2 * MAX_TREE_PROXIES && tb_dynamic_tree_get_area_ratio(t) >= 0.0f,
+               "tree height %d", height);
+  }
+  return r;
+}
+
 /* Checks after a step of world wm (dt, result r). */
 static void check_step(const world_model* wm, float dt, tb_result r) {
   FUZZ_CHECK(r == TB_OK || r == TB_ERR_INVALID_ARGUMENT || r == TB_ERR_NUMERIC, "step: %s", tb_last_error());
@@ -1424,7 +1674,7 @@ static tb_result command(model* m, fuzz_input* in, int* stepped, float* step_dt)
     }
     case 20: return stale_call(m, in);
     case 21: collide(wm, in); return TB_OK;
-    case 22: errors(wm); return TB_OK;
+    case 22: errors(wm); return dynamic_tree(m, in);
     default: { /* a foreign body in a shape or joint call is refused */
       world_model* ow = &m->worlds[(wm - m->worlds + 1) % MAX_WORLDS];
       if (!ow->alive || ow->body_count == 0 || wm->body_count == 0) return TB_OK;
@@ -1531,6 +1781,23 @@ static void check_invariants(const model* m) {
     for (int i = 0; i < wm->joint_count; ++i) FUZZ_CHECK(tb_joint_is_valid(wm->joints[i]), "joint %d invalid", i);
     for (int i = 0; i < wm->chain_count; ++i) FUZZ_CHECK(tb_chain_is_valid(wm->chains[i]), "chain %d invalid", i);
     FUZZ_CHECK(tb_world_hash(wm->id) == tb_world_hash(wm->id), "hash not stable");
+    /* handles survive packing, and distinct objects never pack alike */
+    FUZZ_CHECK(tb_world_id_equal(wm->id, tb_world_id_from_u64(tb_world_id_to_u64(wm->id))), "world id packing");
+    for (int i = 0; i < wm->body_count; ++i) {
+      tb_body_id b = wm->bodies[i], next = wm->bodies[(i + 1) % wm->body_count];
+      FUZZ_CHECK(tb_body_id_equal(b, tb_body_id_from_u64(tb_body_id_to_u64(b))), "body id packing");
+      FUZZ_CHECK(wm->body_count == 1 || (!tb_body_id_equal(b, next) && tb_body_id_to_u64(b) != tb_body_id_to_u64(next)),
+                 "two bodies with one handle");
+    }
+    for (int i = 0; i < wm->shape_count; ++i)
+      FUZZ_CHECK(tb_shape_id_equal(wm->shapes[i], tb_shape_id_from_u64(tb_shape_id_to_u64(wm->shapes[i]))),
+                 "shape id packing");
+    for (int i = 0; i < wm->joint_count; ++i)
+      FUZZ_CHECK(tb_joint_id_equal(wm->joints[i], tb_joint_id_from_u64(tb_joint_id_to_u64(wm->joints[i]))),
+                 "joint id packing");
+    for (int i = 0; i < wm->chain_count; ++i)
+      FUZZ_CHECK(tb_chain_id_equal(wm->chains[i], tb_chain_id_from_u64(tb_chain_id_to_u64(wm->chains[i]))),
+                 "chain id packing");
   }
   const graveyard* g = &m->dead;
   for (int i = 0; i < buried(g->world_count); ++i)
@@ -1555,6 +1822,8 @@ static uint64_t mix_trace(uint64_t h, uint64_t v) {
 static uint64_t run(model* m, const uint8_t* data, size_t size, bool check) {
   memset(m, 0, sizeof *m);
   m->check = check;
+  m->tree.owner = m;
+  m->tree.tree = tb_dynamic_tree_create(fuzz_u8(&(fuzz_input){data, size, 0}) & 1 ? 0.0f : 0.1f);
   fuzz_input in = {data, size, 0};
   uint64_t trace = 0xcbf29ce484222325ull;
   create_world(m, &m->worlds[0], &in, true);
@@ -1598,6 +1867,8 @@ static uint64_t run(model* m, const uint8_t* data, size_t size, bool check) {
 }
 
 static void destroy_worlds(model* m) {
+  if (m->tree.tree != NULL) FUZZ_CHECK(tb_dynamic_tree_destroy(m->tree.tree) == TB_OK, "destroy tree");
+  m->tree.tree = NULL;
   for (int i = 0; i < MAX_WORLDS; ++i)
     if (m->worlds[i].alive) FUZZ_CHECK(tb_destroy_world(m->worlds[i].id) == TB_OK, "destroy world");
 }

@@ -223,6 +223,9 @@ float tb_get_length_units_per_meter(void);
 
 /* ------------------------------------------------------------------ math -- */
 
+/* Inline helpers on these types (vectors, rotations, transforms, boxes, a
+ * spring-damper step) are in tumble_math.h. */
+
 typedef struct tb_vec2 {
   float x, y;
 } tb_vec2;
@@ -286,6 +289,61 @@ static inline bool tb_body_id_is_null(tb_body_id id) { return id.index1 == 0; }
 static inline bool tb_shape_id_is_null(tb_shape_id id) { return id.index1 == 0; }
 static inline bool tb_chain_id_is_null(tb_chain_id id) { return id.index1 == 0; }
 static inline bool tb_joint_id_is_null(tb_joint_id id) { return id.index1 == 0; }
+
+/* Equality of handles (every field, the generation included), and a handle
+ * packed into one uint64_t (for a game's own tables, or as a hash key) and
+ * back: tb_*_id_from_u64(tb_*_id_to_u64(id)) equals id, and the null handle
+ * packs to 0. Bodies, shapes, chains and joints pack index1 into the low 32
+ * bits, then the world slot, then the generation; worlds index1, then the
+ * generation. A packed handle is only good in the process that made it. */
+static inline uint64_t tb_world_id_to_u64(tb_world_id id) {
+  return (uint64_t)id.index1 | (uint64_t)id.generation << 16;
+}
+static inline bool tb_world_id_equal(tb_world_id a, tb_world_id b) {
+  return tb_world_id_to_u64(a) == tb_world_id_to_u64(b);
+}
+static inline tb_world_id tb_world_id_from_u64(uint64_t x) {
+  tb_world_id out = {(uint16_t)x, (uint16_t)(x >> 16)};
+  return out;
+}
+static inline uint64_t tb_body_id_to_u64(tb_body_id id) {
+  return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
+}
+static inline bool tb_body_id_equal(tb_body_id a, tb_body_id b) { return tb_body_id_to_u64(a) == tb_body_id_to_u64(b); }
+static inline tb_body_id tb_body_id_from_u64(uint64_t x) {
+  tb_body_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};
+  return out;
+}
+static inline uint64_t tb_shape_id_to_u64(tb_shape_id id) {
+  return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
+}
+static inline bool tb_shape_id_equal(tb_shape_id a, tb_shape_id b) {
+  return tb_shape_id_to_u64(a) == tb_shape_id_to_u64(b);
+}
+static inline tb_shape_id tb_shape_id_from_u64(uint64_t x) {
+  tb_shape_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};
+  return out;
+}
+static inline uint64_t tb_chain_id_to_u64(tb_chain_id id) {
+  return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
+}
+static inline bool tb_chain_id_equal(tb_chain_id a, tb_chain_id b) {
+  return tb_chain_id_to_u64(a) == tb_chain_id_to_u64(b);
+}
+static inline tb_chain_id tb_chain_id_from_u64(uint64_t x) {
+  tb_chain_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};
+  return out;
+}
+static inline uint64_t tb_joint_id_to_u64(tb_joint_id id) {
+  return (uint64_t)(uint32_t)id.index1 | (uint64_t)id.world0 << 32 | (uint64_t)id.generation << 48;
+}
+static inline bool tb_joint_id_equal(tb_joint_id a, tb_joint_id b) {
+  return tb_joint_id_to_u64(a) == tb_joint_id_to_u64(b);
+}
+static inline tb_joint_id tb_joint_id_from_u64(uint64_t x) {
+  tb_joint_id out = {(int32_t)(uint32_t)x, (uint16_t)(x >> 32), (uint16_t)(x >> 48)};
+  return out;
+}
 
 /* ----------------------------------------------------------------- world -- */
 
@@ -769,6 +827,46 @@ tb_result tb_shape_get_polygon(tb_shape_id shape, tb_polygon* out);
 tb_mass_data tb_compute_circle_mass(const tb_circle* circle, float density);
 tb_mass_data tb_compute_capsule_mass(const tb_capsule* capsule, float density);
 tb_mass_data tb_compute_polygon_mass(const tb_polygon* polygon, float density);
+
+/* Geometry of one shape, at its body's current transform (world coordinates).
+ * These read the shape whatever its body's state (asleep, disabled) and its
+ * filter and sensor flag, and may be called from inside callbacks. Errors: a
+ * null, stale or foreign shape; a point, origin or translation that is not
+ * finite or beyond TB_MAX_LENGTH; a zero translation. */
+
+/* Whether the shape contains a world point, boundary included. Segments and
+ * chain segments contain nothing (false). false on error. */
+bool tb_shape_test_point(tb_shape_id shape, tb_vec2 point);
+struct tb_ray_result;
+/* A ray from origin to origin + translation against this shape alone, as
+ * tb_world_cast_ray sees it: the first point where it enters the shape, the
+ * surface normal there and the fraction of the translation. A ray that starts
+ * inside the shape does not hit it; a segment is hit from either side, a
+ * chain segment only from its front (left) side. On a miss or an error .hit
+ * is false, .fraction 1 and the rest zero (tb_ray_result is declared with the
+ * queries below). */
+struct tb_ray_result tb_shape_ray_cast(tb_shape_id shape, tb_vec2 origin, tb_vec2 translation);
+/* The point of the shape nearest to a world point: the point itself when the
+ * shape contains it, else the nearest point of its surface (rounding
+ * included). For segments, the nearest point of the segment. (0, 0) on error. */
+tb_vec2 tb_shape_get_closest_point(tb_shape_id shape, tb_vec2 target);
+
+/* Replace a shape's geometry in place, in body coordinates. The shape keeps
+ * its handle, material, filter, flags and user data, and may change type (a
+ * box made a circle is then a circle: tb_shape_get_type tells). As when a
+ * shape is created, the body's mass, centre and inertia are recomputed from
+ * its shapes (a mass set by tb_body_set_mass_data is replaced). The shape's
+ * contacts end (with end events when they touched), and the bodies it touched
+ * wake; the broad phase finds its new pairs at the next step. The body wakes.
+ * Errors: as for tb_create_*_shape (NULL, bad or degenerate geometry, a mass
+ * that overflows at the shape's density, a box beyond TB_MAX_LENGTH at the
+ * body's place), a chain segment (its geometry belongs to the chain), a call
+ * from inside tb_world_step or a callback (TB_ERR_LOCKED). A refused call
+ * changes nothing. */
+tb_result tb_shape_set_circle(tb_shape_id shape, const tb_circle* circle);
+tb_result tb_shape_set_capsule(tb_shape_id shape, const tb_capsule* capsule);
+tb_result tb_shape_set_segment(tb_shape_id shape, const tb_segment* segment);
+tb_result tb_shape_set_polygon(tb_shape_id shape, const tb_polygon* polygon);
 
 /* ------------------------------------------------------------- collision -- */
 
@@ -1536,6 +1634,99 @@ tb_debug_draw tb_default_debug_draw(void);
  * reach beyond TB_MAX_LENGTH or have lower > upper (when used), a colour
  * component outside [0, 1] (NaN included). The world is never changed. */
 tb_result tb_world_draw(tb_world_id world, const tb_debug_draw* draw);
+
+/* ---------------------------------------------------------- dynamic tree -- */
+
+/* A dynamic AABB tree for the game's own use (its own broad phase, trigger
+ * volumes, AI sight lines, particles): the bounding volume hierarchy the world
+ * uses for its shapes, on boxes and user data the game supplies. Each proxy
+ * holds a fat box (its box grown by the tree's margin on every side),
+ * category bits and a user data pointer. A tree of n proxies is at most about
+ * 1.44 log2 n high whatever the insertion order; the same calls give the
+ * same tree. Not thread-safe: use one tree from one thread at a time.
+ *
+ * Proxy ids are >= 0 and stay the same for the proxy's life. An id that is
+ * not a live proxy (negative, never handed out, destroyed) is refused with
+ * TB_ERR_INVALID_ARGUMENT; a destroyed proxy's id may be handed out again to
+ * a later proxy, so drop ids when you destroy their proxies. Boxes must be
+ * finite, within TB_MAX_LENGTH and have lower <= upper. Changes (every call
+ * that takes a non-const tree) from inside a query or ray cast callback of
+ * the same tree are refused with TB_ERR_LOCKED; nested queries are allowed.
+ * A refused call changes nothing. */
+typedef struct tb_dynamic_tree tb_dynamic_tree;
+
+#define TB_NULL_PROXY (-1)
+
+/* An empty tree whose fat boxes are the boxes given grown by margin (metres,
+ * finite, 0 to TB_MAX_LENGTH; 0 stores the boxes as they are, as Box2D v3's
+ * tree does; the world's trees use 0.1). NULL on error. */
+tb_dynamic_tree* tb_dynamic_tree_create(float margin);
+tb_result tb_dynamic_tree_destroy(tb_dynamic_tree* tree);
+
+/* Inserts a proxy for a box; returns its id, or TB_NULL_PROXY on error. */
+int32_t tb_dynamic_tree_create_proxy(tb_dynamic_tree* tree, tb_aabb aabb, uint64_t category_bits, void* user_data);
+tb_result tb_dynamic_tree_destroy_proxy(tb_dynamic_tree* tree, int32_t proxy);
+/* The proxy's box is now aabb and is expected to move by about displacement
+ * before the next call ({0, 0}: no prediction). The proxy is re-inserted,
+ * with a new fat box stretched along displacement, only when aabb leaves its
+ * fat box or the fat box has grown more than twice the one it would get now;
+ * *reinserted (may be NULL) tells whether it was. displacement: finite, each
+ * component within TB_MAX_LENGTH. */
+tb_result tb_dynamic_tree_move_proxy(tb_dynamic_tree* tree, int32_t proxy, tb_aabb aabb, tb_vec2 displacement,
+                                     bool* reinserted);
+/* Rebuilds the whole hierarchy top-down (for sets that stopped changing, e.g.
+ * a level just loaded): ids, fat boxes and user data are kept. */
+tb_result tb_dynamic_tree_rebuild(tb_dynamic_tree* tree);
+
+/* Query callback: a proxy whose fat box overlaps the query box (touching
+ * counts); return false to stop the query. */
+typedef bool tb_dynamic_tree_query_fn(int32_t proxy, void* user_data, void* context);
+/* Calls fn for every proxy with (category_bits & mask_bits) != 0 whose fat box
+ * overlaps aabb, in no particular order. */
+tb_result tb_dynamic_tree_query(const tb_dynamic_tree* tree, tb_aabb aabb, uint64_t mask_bits,
+                                tb_dynamic_tree_query_fn* fn, void* context);
+
+/* The segment origin + t translation for 0 <= t <= max_fraction (origin and
+ * translation finite and within TB_MAX_LENGTH, max_fraction in [0,
+ * TB_MAX_LENGTH]). A zero translation tests the point origin. */
+typedef struct tb_dynamic_tree_ray_input {
+  tb_vec2 origin;
+  tb_vec2 translation;
+  float max_fraction;
+} tb_dynamic_tree_ray_input;
+
+/* Ray callback: a proxy whose fat box the segment, clipped to the current max
+ * fraction, touches (input holds that clipped segment). Cast against your own
+ * object and return: 0 to stop, a negative value to ignore this proxy, the
+ * hit's fraction to clip the ray there (closest hit), or input->max_fraction
+ * to go on unclipped (a value at or above the current max fraction changes
+ * nothing, as does NaN). */
+typedef float tb_dynamic_tree_ray_fn(const tb_dynamic_tree_ray_input* input, int32_t proxy, void* user_data,
+                                     void* context);
+/* Calls fn for the proxies with (category_bits & mask_bits) != 0 whose fat box
+ * the segment touches, nearer boxes first along each branch (not a global
+ * sort: keep the closest hit by clipping). */
+tb_result tb_dynamic_tree_ray_cast(const tb_dynamic_tree* tree, const tb_dynamic_tree_ray_input* input,
+                                   uint64_t mask_bits, tb_dynamic_tree_ray_fn* fn, void* context);
+
+/* Checks the tree's invariants: links, free list, counts, heights, category
+ * bits, every internal box the union of its children's, one user data slot
+ * per proxy. TB_OK, or TB_ERR_INVALID_ARGUMENT naming what is broken (only
+ * memory corruption breaks them). */
+tb_result tb_dynamic_tree_validate(const tb_dynamic_tree* tree);
+
+/* Edges on the longest root-to-leaf path (0 for an empty or one-proxy tree). */
+int tb_dynamic_tree_get_height(const tb_dynamic_tree* tree);
+int tb_dynamic_tree_get_proxy_count(const tb_dynamic_tree* tree);
+/* The sum of the internal nodes' perimeters over the root's: lower is a better
+ * tree (0 with fewer than two proxies). */
+float tb_dynamic_tree_get_area_ratio(const tb_dynamic_tree* tree);
+/* Getters of a proxy: NULL, a zero box, 0 for a bad tree or id. */
+void* tb_dynamic_tree_get_user_data(const tb_dynamic_tree* tree, int32_t proxy);
+tb_aabb tb_dynamic_tree_get_fat_aabb(const tb_dynamic_tree* tree, int32_t proxy);
+uint64_t tb_dynamic_tree_get_category_bits(const tb_dynamic_tree* tree, int32_t proxy);
+tb_result tb_dynamic_tree_set_user_data(tb_dynamic_tree* tree, int32_t proxy, void* user_data);
+tb_result tb_dynamic_tree_set_category_bits(tb_dynamic_tree* tree, int32_t proxy, uint64_t category_bits);
 
 #ifdef __cplusplus
 }

@@ -16,7 +16,7 @@ static bool visible(const tb_shape* s, tb_query_filter f) {
          !(f.skip_sensors && s->sensor);
 }
 
-static tb_shape_proxy shape_proxy(const tb_shape* s) {
+tb_shape_proxy tb_shape_geom_proxy(const tb_shape* s) {
   switch (s->type) {
     case TB_SHAPE_CIRCLE: return tb_make_circle_proxy(&s->geom.circle);
     case TB_SHAPE_CAPSULE: return tb_make_capsule_proxy(&s->geom.capsule);
@@ -27,7 +27,7 @@ static tb_shape_proxy shape_proxy(const tb_shape* s) {
   return tb_make_polygon_proxy(&s->geom.polygon);
 }
 
-static void ray_cast_shape(const tb_shape* s, tb_transform xf, const tb_ray_input* ray, tb_cast_output* out) {
+void tb_shape_geom_ray_cast(const tb_shape* s, tb_transform xf, const tb_ray_input* ray, tb_cast_output* out) {
   switch (s->type) {
     case TB_SHAPE_CIRCLE: tb_ray_cast_circle(ray, &s->geom.circle, xf, out); return;
     case TB_SHAPE_CAPSULE: tb_ray_cast_capsule(ray, &s->geom.capsule, xf, out); return;
@@ -85,14 +85,14 @@ static float ray_callback(const tb_tree_ray_input* input, int32_t proxy, int32_t
   if (!visible(s, rc->filter)) return -1.0f;
   tb_ray_input ray = {input->origin, input->translation, input->max_fraction};
   tb_cast_output out = {0};
-  ray_cast_shape(s, tb_body_at(rc->w, s->body)->transform, &ray, &out);
+  tb_shape_geom_ray_cast(s, tb_body_at(rc->w, s->body)->transform, &ray, &out);
   if (!out.hit) return -1.0f;
   float r = call_cast(rc->w, rc->fn, tb_make_shape_id(rc->w, shape), out.point, out.normal, out.fraction, rc->context);
   if (r >= 0.0f && r < rc->fraction) rc->fraction = r;
   return r;
 }
 
-static tb_result check_ray(tb_world* w, const char* fn, tb_vec2 origin, tb_vec2 translation) {
+tb_result tb_check_ray(struct tb_world* w, const char* fn, tb_vec2 origin, tb_vec2 translation) {
   if (!tb_point_ok(origin))
     return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: origin (%g, %g) is not finite or beyond TB_MAX_LENGTH", fn,
                    (double)origin.x, (double)origin.y);
@@ -117,7 +117,7 @@ tb_result tb_world_cast_ray(tb_world_id id, tb_vec2 origin, tb_vec2 translation,
   const char* name = "tb_world_cast_ray";
   tb_world* w = tb_world_get(id, name);
   if (w == NULL) return tb_last_result();
-  tb_result r = check_ray(w, name, origin, translation);
+  tb_result r = tb_check_ray(w, name, origin, translation);
   if (r == TB_OK) r = check_callback(w, name, fn != NULL);
   if (r != TB_OK) return r;
   ray_context rc = {w, filter, fn, context, 1.0f};
@@ -135,7 +135,7 @@ tb_ray_result tb_world_cast_ray_closest(tb_world_id id, tb_vec2 origin, tb_vec2 
   const char* name = "tb_world_cast_ray_closest";
   tb_ray_result best = {{0, 0, 0}, {0.0f, 0.0f}, {0.0f, 0.0f}, 1.0f, false};
   tb_world* w = tb_world_get(id, name);
-  if (w == NULL || check_ray(w, name, origin, translation) != TB_OK) return best;
+  if (w == NULL || tb_check_ray(w, name, origin, translation) != TB_OK) return best;
   ray_context rc = {w, filter, closest_callback, &best, 1.0f};
   cast_ray(w, origin, translation, &rc);
   return best;
@@ -168,7 +168,7 @@ tb_result tb_world_cast_ray_all(tb_world_id id, tb_vec2 origin, tb_vec2 translat
   const char* name = "tb_world_cast_ray_all";
   tb_world* w = tb_world_get(id, name);
   if (w == NULL) return tb_last_result();
-  tb_result r = check_ray(w, name, origin, translation);
+  tb_result r = tb_check_ray(w, name, origin, translation);
   if (r != TB_OK) return r;
   if (count == NULL) return tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: count is NULL", name);
   if (capacity < 0 || (out == NULL && capacity > 0))
@@ -220,7 +220,7 @@ static bool overlap_callback(int32_t proxy, int32_t shape, void* context) {
     case OVERLAP_AABB: hit = aabb_overlap(s->aabb, oc->aabb); break;
     case OVERLAP_POINT: hit = tb_shape_geom_contains(s, xf, oc->point); break;
     case OVERLAP_SHAPE: {
-      tb_distance_input in = {shape_proxy(s), *oc->proxy, xf, oc->transform};
+      tb_distance_input in = {tb_shape_geom_proxy(s), *oc->proxy, xf, oc->transform};
       tb_distance_output out;
       hit = tb_shape_distance(&in, NULL, &out) == TB_OK && out.distance <= 0.0f;
       break;
@@ -330,7 +330,7 @@ static bool shape_cast_callback(int32_t proxy, int32_t shape, void* context) {
   shape_cast_context* sc = context;
   const tb_shape* s = tb_shape_at(sc->w, shape);
   if (!visible(s, sc->filter)) return true;
-  tb_shape_cast_input in = {shape_proxy(s), *sc->proxy, tb_body_at(sc->w, s->body)->transform, sc->transform,
+  tb_shape_cast_input in = {tb_shape_geom_proxy(s), *sc->proxy, tb_body_at(sc->w, s->body)->transform, sc->transform,
                             tb_scale(sc->fraction, sc->translation)};
   tb_cast_output out;
   if (tb_shape_cast(&in, &out) != TB_OK || !out.hit) return true;

@@ -28,6 +28,41 @@ tb_shape_def tb_default_shape_def(void) {
                         .enable_contact_events = true};
 }
 
+/* Puts geometry of a type into proto after the checks of tb_create_*_shape:
+ * valid geometry, and a mass and inertia within TB_MAX_VALUE at proto's
+ * density. On error proto may be half changed (the caller drops it). */
+static tb_result set_geometry_of(tb_world* w, tb_shape* proto, tb_shape_type type, const void* geom, const char* fn) {
+  const char* problem = NULL;
+  proto->type = type;
+  switch (type) {
+    case TB_SHAPE_CIRCLE:
+      proto->geom.circle = *(const tb_circle*)geom;
+      problem = tb_check_circle(geom);
+      break;
+    case TB_SHAPE_CAPSULE:
+      proto->geom.capsule = *(const tb_capsule*)geom;
+      problem = tb_check_capsule(geom);
+      break;
+    case TB_SHAPE_SEGMENT:
+      proto->geom.segment = *(const tb_segment*)geom;
+      problem = tb_check_segment(geom);
+      break;
+    case TB_SHAPE_POLYGON:
+      proto->geom.polygon = *(const tb_polygon*)geom;
+      problem = tb_check_polygon(geom);
+      break;
+    case TB_SHAPE_CHAIN_SEGMENT: problem = "chain segments are made by tb_create_chain"; break;
+  }
+  if (problem != NULL)
+    return tb_fail(w, type == TB_SHAPE_POLYGON ? TB_ERR_DEGENERATE_POLYGON : TB_ERR_INVALID_ARGUMENT, "%s: %s", fn,
+                   problem);
+  tb_mass_data md = tb_shape_geom_mass(proto);
+  if (!tb_value_ok(md.mass) || !tb_value_ok(md.rotational_inertia))
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the shape's mass or inertia overflows (density %g)", fn,
+                   (double)proto->density);
+  return TB_OK;
+}
+
 static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_shape_type type, const void* geom,
                                 const char* fn) {
   const tb_shape_id null_id = {0, 0, 0};
@@ -47,7 +82,6 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
     tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: def->tangent_speed = %g is not finite", fn, (double)def->tangent_speed);
     return null_id;
   }
-  const char* problem = NULL;
   tb_shape proto = {.type = type,
                     .density = def->density,
                     .friction = def->friction,
@@ -63,35 +97,7 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
                     .proxy = -1,
                     .chain = -1,
                     .user_data = def->user_data};
-  switch (type) {
-    case TB_SHAPE_CIRCLE:
-      proto.geom.circle = *(const tb_circle*)geom;
-      problem = tb_check_circle(geom);
-      break;
-    case TB_SHAPE_CAPSULE:
-      proto.geom.capsule = *(const tb_capsule*)geom;
-      problem = tb_check_capsule(geom);
-      break;
-    case TB_SHAPE_SEGMENT:
-      proto.geom.segment = *(const tb_segment*)geom;
-      problem = tb_check_segment(geom);
-      break;
-    case TB_SHAPE_POLYGON:
-      proto.geom.polygon = *(const tb_polygon*)geom;
-      problem = tb_check_polygon(geom);
-      break;
-    case TB_SHAPE_CHAIN_SEGMENT: problem = "chain segments are made by tb_create_chain"; break;
-  }
-  if (problem != NULL) {
-    tb_fail(w, type == TB_SHAPE_POLYGON ? TB_ERR_DEGENERATE_POLYGON : TB_ERR_INVALID_ARGUMENT, "%s: %s", fn, problem);
-    return null_id;
-  }
-  tb_mass_data md = tb_shape_geom_mass(&proto);
-  if (!tb_value_ok(md.mass) || !tb_value_ok(md.rotational_inertia)) {
-    tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the shape's mass or inertia overflows (density %g)", fn,
-            (double)def->density);
-    return null_id;
-  }
+  if (set_geometry_of(w, &proto, type, geom, fn) != TB_OK) return null_id;
   int index = tb_shape_attach(w, body_id.index1 - 1, &proto, fn);
   if (index < 0) return null_id;
   tb_body* owner = tb_body_at(w, body_id.index1 - 1);
@@ -336,4 +342,91 @@ tb_result tb_shape_get_polygon(tb_shape_id id, tb_polygon* out) {
 }
 tb_result tb_shape_get_chain_segment(tb_shape_id id, tb_chain_segment* out) {
   return get_geometry(id, TB_SHAPE_CHAIN_SEGMENT, out, __func__);
+}
+
+/* ---- one shape's geometry in the world ------------------------------------ */
+
+static tb_result check_point_arg(tb_world* w, const char* fn, const char* name, tb_vec2 p) {
+  if (tb_point_ok(p)) return TB_OK;
+  return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: %s = (%g, %g) is not finite or beyond TB_MAX_LENGTH", fn, name,
+                 (double)p.x, (double)p.y);
+}
+
+bool tb_shape_test_point(tb_shape_id id, tb_vec2 point) {
+  GET_SHAPE(id, false);
+  if (check_point_arg(w, __func__, "point", point) != TB_OK) return false;
+  return tb_shape_geom_contains(s, tb_body_at(w, s->body)->transform, point);
+}
+
+tb_ray_result tb_shape_ray_cast(tb_shape_id id, tb_vec2 origin, tb_vec2 translation) {
+  const tb_ray_result miss = {{0, 0, 0}, {0.0f, 0.0f}, {0.0f, 0.0f}, 1.0f, false};
+  GET_SHAPE(id, miss);
+  if (tb_check_ray(w, __func__, origin, translation) != TB_OK) return miss;
+  tb_ray_input ray = {origin, translation, 1.0f};
+  tb_cast_output out = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f, 0, false};
+  tb_shape_geom_ray_cast(s, tb_body_at(w, s->body)->transform, &ray, &out);
+  if (!out.hit) return miss;
+  return (tb_ray_result){id, out.point, out.normal, out.fraction, true};
+}
+
+/* GJK between the shape's core (its points without the rounding radius r)
+ * and the target: a target within r of the core is inside; otherwise the
+ * nearest surface point lies r from the core's nearest point towards it. */
+tb_vec2 tb_shape_get_closest_point(tb_shape_id id, tb_vec2 target) {
+  const tb_vec2 zero = {0.0f, 0.0f};
+  GET_SHAPE(id, zero);
+  if (check_point_arg(w, __func__, "target", target) != TB_OK) return zero;
+  tb_shape_proxy core = tb_shape_geom_proxy(s);
+  float radius = core.radius;
+  core.radius = 0.0f;
+  tb_distance_input in = {core, {{target}, 1, 0.0f}, tb_body_at(w, s->body)->transform, {{0.0f, 0.0f}, {1.0f, 0.0f}}};
+  tb_distance_output out;
+  if (tb_shape_distance(&in, NULL, &out) != TB_OK || out.distance <= radius) return target;
+  return tb_mul_add(out.point_a, radius, out.normal);
+}
+
+/* The checks of tb_create_*_shape on the new geometry and the body's broad
+ * phase (room reserved) come first; then nothing can fail: the contacts end,
+ * the proxy is made anew from the new box and queued for pair finding, and
+ * the mass follows. */
+static tb_result set_geometry(tb_shape_id id, tb_shape_type type, const void* geom, const char* name, const char* fn) {
+  tb_world* w = NULL;
+  tb_shape* s = tb_shape_get_unlocked(id, &w, fn);
+  if (s == NULL) return tb_last_result();
+  if (geom == NULL) return tb_fail(w, TB_ERR_NULL_ARGUMENT, "%s: %s is NULL", fn, name);
+  if (s->chain >= 0)
+    return tb_fail(w, TB_ERR_INVALID_ARGUMENT, "%s: the shape is a segment of a chain: its geometry is the chain's",
+                   fn);
+  tb_shape proto = *s;
+  if (set_geometry_of(w, &proto, type, geom, fn) != TB_OK) return tb_last_result();
+  int index = id.index1 - 1, body = s->body;
+  if (tb_shape_prepare(w, body, &proto, 1, fn) != TB_OK) return tb_last_result();
+  for (int key = tb_body_at(w, body)->contact_list; key >= 0;) {
+    const tb_contact* c = (const tb_contact*)tb_pool_at(&w->contacts, key >> 1);
+    if ((c->shape_a == index || c->shape_b == index) && (c->flags & TB_CONTACT_TOUCHING))
+      tb_wake_body(w, c->edges[(key & 1) ^ 1].body);
+    key = c->edges[key & 1].next;
+  }
+  tb_contacts_destroy_of_body(w, body, index);
+  bool had_proxy = s->proxy >= 0;
+  tb_broad_phase_destroy_proxy(w, index);
+  s->type = proto.type;
+  s->geom = proto.geom;
+  if (had_proxy) (void)tb_broad_phase_create_proxy(w, index); /* prepared: cannot fail */
+  tb_body_update_mass(w, tb_body_at(w, body));
+  tb_wake_body(w, body);
+  return TB_OK;
+}
+
+tb_result tb_shape_set_circle(tb_shape_id id, const tb_circle* circle) {
+  return set_geometry(id, TB_SHAPE_CIRCLE, circle, "circle", __func__);
+}
+tb_result tb_shape_set_capsule(tb_shape_id id, const tb_capsule* capsule) {
+  return set_geometry(id, TB_SHAPE_CAPSULE, capsule, "capsule", __func__);
+}
+tb_result tb_shape_set_segment(tb_shape_id id, const tb_segment* segment) {
+  return set_geometry(id, TB_SHAPE_SEGMENT, segment, "segment", __func__);
+}
+tb_result tb_shape_set_polygon(tb_shape_id id, const tb_polygon* polygon) {
+  return set_geometry(id, TB_SHAPE_POLYGON, polygon, "polygon", __func__);
 }

@@ -1130,6 +1130,115 @@ START_TEST(body_and_shape_extras) {
 }
 END_TEST
 
+/* ---- one shape's geometry, and the dynamic tree (issue 24) ------------------- */
+
+static tb_result set_circle_in_callback;
+static bool test_point_in_callback;
+
+static bool set_geometry_reenter(tb_shape_id shape, void* context) {
+  (void)context;
+  tb_circle c = {{0, 0}, 2.0f};
+  set_circle_in_callback = tb_shape_set_circle(shape, &c);
+  test_point_in_callback = tb_shape_test_point(shape, tb_body_get_position(tb_shape_get_body(shape)));
+  return true;
+}
+
+START_TEST(shape_geometry_calls) {
+  tb_shape_def sd = tb_default_shape_def();
+  /* bad geometry of every type, NULL geometry, a chain segment */
+  for (int i = 0; i < N_BAD_SIZES; ++i) {
+    tb_circle circle = {{0, 0}, bad_sizes[i]};
+    REJECT(tb_shape_set_circle(BOX, &circle), TB_ERR_INVALID_ARGUMENT, "radius");
+    tb_capsule capsule = {{0, 0}, {1, 0}, bad_sizes[i]};
+    REJECT(tb_shape_set_capsule(BOX, &capsule), TB_ERR_INVALID_ARGUMENT, "radius");
+  }
+  for (int i = 0; i < N_BAD; ++i) {
+    float x = bad_reals[i];
+    tb_circle circle = {{x, 0}, 0.5f};
+    REJECT(tb_shape_set_circle(BOX, &circle), TB_ERR_INVALID_ARGUMENT, "center");
+    tb_segment segment = {{0, 0}, {0, x}};
+    REJECT(tb_shape_set_segment(BOX, &segment), TB_ERR_INVALID_ARGUMENT, "segment");
+    tb_vec2 p = {x, 1.0f};
+    REJECT(tb_shape_test_point(BOX, p), TB_ERR_INVALID_ARGUMENT, "point");
+    REJECT(tb_shape_get_closest_point(BOX, p), TB_ERR_INVALID_ARGUMENT, "target");
+    REJECT(tb_shape_ray_cast(BOX, p, (tb_vec2){1, 0}), TB_ERR_INVALID_ARGUMENT, "origin");
+    REJECT(tb_shape_ray_cast(BOX, (tb_vec2){0, 0}, p), TB_ERR_INVALID_ARGUMENT, "translation");
+  }
+  REJECT(tb_shape_ray_cast(BOX, (tb_vec2){0, 0}, (tb_vec2){0, 0}), TB_ERR_INVALID_ARGUMENT, "zero");
+  tb_segment dot = {{1, 1}, {1, 1}};
+  REJECT(tb_shape_set_segment(BOX, &dot), TB_ERR_INVALID_ARGUMENT, "coincide");
+  tb_capsule ball = {{1, 1}, {1, 1}, 0.5f};
+  REJECT(tb_shape_set_capsule(BOX, &ball), TB_ERR_INVALID_ARGUMENT, "coincide");
+  tb_polygon box, flat;
+  ck_assert_int_eq(tb_make_box(1.0f, 1.0f, &box), TB_OK);
+  flat = box;
+  for (int i = 0; i < 4; ++i) flat.vertices[i] = (tb_vec2){3.0f, 3.0f};
+  REJECT(tb_shape_set_polygon(BOX, &flat), TB_ERR_DEGENERATE_POLYGON, "convex");
+  flat = box;
+  flat.count = TB_MAX_POLYGON_VERTICES + 1;
+  REJECT(tb_shape_set_polygon(BOX, &flat), TB_ERR_DEGENERATE_POLYGON, "count");
+  REJECT(tb_shape_set_circle(BOX, NULL), TB_ERR_NULL_ARGUMENT, "circle");
+  REJECT(tb_shape_set_capsule(BOX, NULL), TB_ERR_NULL_ARGUMENT, "capsule");
+  REJECT(tb_shape_set_segment(BOX, NULL), TB_ERR_NULL_ARGUMENT, "segment");
+  REJECT(tb_shape_set_polygon(BOX, NULL), TB_ERR_NULL_ARGUMENT, "polygon");
+  tb_circle fine = {{0, 0}, 0.5f};
+  REJECT(tb_shape_set_circle(CHAIN_SEG, &fine), TB_ERR_INVALID_ARGUMENT, "chain");
+  REJECT(tb_shape_set_polygon(CHAIN_SEG, &box), TB_ERR_INVALID_ARGUMENT, "chain");
+  /* a shape whose box would reach beyond the edge of the world at its body */
+  tb_capsule edge = {{9.95e6f, 0.0f}, {9.999e6f, 0.0f}, 2000.0f}; /* reaches 1e7 + 1 km */
+  REJECT(tb_shape_set_capsule(BOX, &edge), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
+  /* dead, foreign-world and garbage shape handles, and a shape of a dead world */
+  tb_world_id gone = tbt_world(0, 0);
+  tb_body_id gone_body = tbt_box_body(gone, 0, 0, 0.5f, 0.5f);
+  tb_shape_id gone_shape;
+  tb_body_get_shapes(gone_body, &gone_shape, 1);
+  tb_destroy_world(gone);
+  tb_shape_id dead_shape = BOX;
+  dead_shape.generation ^= 0x5a5a;
+  const tb_shape_id stale[] = {dead_shape, gone_shape, {0, 0, 0}, {1 << 30, 0, 0}};
+  for (int i = 0; i < 4; ++i) {
+    tb_shape_id s = stale[i];
+    REJECT(tb_shape_set_circle(s, &fine), TB_ERR_STALE_HANDLE, "shape");
+    REJECT(tb_shape_set_polygon(s, &box), TB_ERR_STALE_HANDLE, "shape");
+    REJECT(tb_shape_set_capsule(s, &ball), TB_ERR_STALE_HANDLE, "shape");
+    REJECT(tb_shape_set_segment(s, &dot), TB_ERR_STALE_HANDLE, "shape");
+    REJECT(tb_shape_test_point(s, (tb_vec2){0, 0}), TB_ERR_STALE_HANDLE, "shape");
+    REJECT(tb_shape_get_closest_point(s, (tb_vec2){0, 0}), TB_ERR_STALE_HANDLE, "shape");
+    REJECT(tb_shape_ray_cast(s, (tb_vec2){0, 0}, (tb_vec2){1, 0}), TB_ERR_STALE_HANDLE, "shape");
+  }
+  /* refused getters give the documented values */
+  tb_ray_result r;
+  REJECT(r = tb_shape_ray_cast(dead_shape, (tb_vec2){0, 0}, (tb_vec2){1, 0}), TB_ERR_STALE_HANDLE, "shape");
+  ck_assert(!r.hit && r.fraction == 1.0f && tb_shape_id_is_null(r.shape) && r.point.x == 0.0f);
+  tb_vec2 q;
+  REJECT(q = tb_shape_get_closest_point(dead_shape, (tb_vec2){5, 5}), TB_ERR_STALE_HANDLE, "shape");
+  ck_assert(q.x == 0.0f && q.y == 0.0f);
+  /* from inside a query callback: changes refused, reads allowed */
+  set_circle_in_callback = TB_OK;
+  test_point_in_callback = false;
+  tb_vec2 at = tb_body_get_position(A);
+  ck_assert_int_eq(tb_world_overlap_point(W, at, tb_default_query_filter(), set_geometry_reenter, NULL), TB_OK);
+  ck_assert_int_eq(set_circle_in_callback, TB_ERR_LOCKED);
+  ck_assert(test_point_in_callback);
+  assert_unchanged("tb_shape_set_circle from a callback");
+  /* the dynamic tree's refusals leave the world alone too */
+  REJECT(tb_dynamic_tree_create(-1.0f), TB_ERR_INVALID_ARGUMENT, "margin");
+  REJECT(tb_dynamic_tree_create_proxy(NULL, (tb_aabb){{0, 0}, {1, 1}}, 1, NULL), TB_ERR_NULL_ARGUMENT, "tree");
+  tb_dynamic_tree* tree = tb_dynamic_tree_create(0.1f);
+  REJECT(tb_dynamic_tree_create_proxy(tree, (tb_aabb){{0, 0}, {NAN, 1}}, 1, NULL), TB_ERR_INVALID_ARGUMENT, "aabb");
+  REJECT(tb_dynamic_tree_destroy_proxy(tree, 0), TB_ERR_INVALID_ARGUMENT, "proxy");
+  REJECT(tb_dynamic_tree_get_user_data(tree, 3), TB_ERR_INVALID_ARGUMENT, "proxy");
+  ck_assert_int_eq(tb_dynamic_tree_destroy(tree), TB_OK);
+  check_twin();
+  /* a density at TB_MAX_VALUE: a large circle's mass overflows and is refused */
+  ck_assert_int_eq(tb_shape_set_density(BOX, TB_MAX_VALUE), TB_OK);
+  snapshot();
+  tb_circle huge = {{0, 0}, 1e3f};
+  REJECT(tb_shape_set_circle(BOX, &huge), TB_ERR_INVALID_ARGUMENT, "overflows");
+  (void)sd;
+}
+END_TEST
+
 /* ---- chains ---------------------------------------------------------------- */
 
 START_TEST(chain_calls) {
@@ -1915,6 +2024,7 @@ static Suite* bad_input_table_suite(void) {
   tcase_add_test(tc, mass_and_collide_functions);
   tcase_add_test(tc, geometry_and_distance_calls);
   tcase_add_test(tc, body_and_shape_extras);
+  tcase_add_test(tc, shape_geometry_calls);
   tcase_add_test(tc, chain_calls);
   tcase_add_test(tc, refusals_at_the_edge_of_the_world);
   tcase_add_test(tc, joint_creation);

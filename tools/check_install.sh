@@ -19,7 +19,7 @@ rm -rf "$root"
 mkdir -p "$root"
 a=$root/prefix-a
 b=$root/prefix-b
-installed=(include/tumble.h include/tumble_render.h lib/libtumble.a lib/libtumble.so lib/libtumble.so.0
+installed=(include/tumble.h include/tumble_math.h include/tumble_render.h lib/libtumble.a lib/libtumble.so lib/libtumble.so.0
   lib/libtumble-render.a lib/libtumble-render.so lib/libtumble-render.so.0
   lib/pkgconfig/tumble.pc lib/pkgconfig/tumble-render.pc)
 
