@@ -788,7 +788,7 @@ static inline __attribute__((always_inline)) tb_f4 solve_friction(tb_wide_contac
  * the slides and keeps the points' separations; stored: a later pass at the
  * same positions, which reads those and so needs only the bodies' velocities. */
 static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c, tb_step_context* ctx, bool use_bias,
-                                                             bool measure, bool stored, tb_f4* change) {
+                                                             bool measure, bool stored, bool record, tb_f4* change) {
   tb_solver_body* states = ctx->states;
   float inv_h = ctx->inv_h, push = ctx->contact_push_max_velocity;
   wide_body A = stored ? gather_velocities(states, c->a) : gather(states, c->a);
@@ -848,7 +848,7 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   if (!use_bias) *change = max4(*change, normal_change);
   tb_f4 f1 = solve_friction(c, p1, &arms1, &A, &B);
   tb_f4 f2 = solve_friction(c, p2, &arms2, &A, &B);
-  if (!use_bias) {
+  if (record) {
     /* the relax passes' record (relax_activity.h): the points' speed changes,
      * friction's taken at the normal K (the same order as the tangent one) */
     tb_f4 moved = max4(normal_change, max4(max4(f1, -f1) * c->k11, max4(f2, -f2) * c->k22));
@@ -1050,16 +1050,22 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
     int first = backward ? hi - 1 : lo, step = backward ? -1 : 1;
     if (use_bias && stored)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx, true, false, true, &change);
+        solve_wide(&wide[b], ctx, true, false, true, false, &change);
     else if (use_bias)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx, true, false, false, &change);
+        solve_wide(&wide[b], ctx, true, false, false, false, &change);
     else if (measure)
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx, false, true, false, &change);
+        solve_wide(&wide[b], ctx, false, true, false, true, &change);
+    else if (ctx->relax_all)
+      for (int i = lo, b = first; i < hi; ++i, b += step)
+        solve_wide(&wide[b], ctx, false, false, true, false, &change);
     else /* a later relax pass: only blocks with a body that still moves */
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        if (block_active(ctx, &wide[b])) solve_wide(&wide[b], ctx, false, false, true, &change);
+        if (block_active(ctx, &wide[b])) {
+          solve_wide(&wide[b], ctx, false, false, true, true, &change);
+          ctx->relax_solved += 1;
+        }
   }
   return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
 }

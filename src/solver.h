@@ -69,7 +69,8 @@ typedef struct tb_step_context {
   int32_t* changed_in;
   const float* reach;
   int relax_pass;  /* the current relax pass, counted from 1 over the step */
-  bool relax_all;  /* the first relax pass after a position update: everything is solved */
+  bool relax_all;  /* every constraint is solved in this relax pass (and nothing recorded) */
+  int relax_solved; /* contact blocks the last relax pass solved */
 } tb_step_context;
 
 /* The speed caps (tumble.h, maximum_linear_speed) hold for every moving body
