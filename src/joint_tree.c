@@ -66,6 +66,7 @@
 #define TB_TREE_RELAX_COMPLIANCE 1e-6
 
 typedef struct tb_jt_node {
+  bool body;       /* a body node (else a joint's rows) */
   int parent;      /* node index, -1 for a root */
   int dof;         /* 3 for a body, the row count for a joint */
   int ref;         /* body: solver index; joint: joint index */
@@ -83,6 +84,8 @@ typedef struct tb_jt_node {
 void tb_joint_tree_free(tb_joint_tree* t) {
   tb_mem_free(t->nodes, (size_t)t->node_capacity * sizeof *t->nodes);
   tb_mem_free(t->order, (size_t)t->order_capacity * sizeof *t->order);
+  tb_mem_free(t->spare, (size_t)t->spare_capacity * sizeof *t->spare);
+  tb_mem_free(t->place, (size_t)t->place_capacity * sizeof *t->place);
   tb_mem_free(t->body_scratch, (size_t)t->body_capacity * sizeof *t->body_scratch);
   tb_mem_free(t->edges, (size_t)t->edge_capacity * sizeof *t->edges);
   tb_mem_free(t->components, (size_t)t->component_capacity * sizeof *t->components);
@@ -126,6 +129,8 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   if (joints == 0) return true;
   if (!tb_array_reserve((void**)&t->nodes, &t->node_capacity, bodies + joints, sizeof *t->nodes) ||
       !tb_array_reserve((void**)&t->order, &t->order_capacity, bodies + joints, sizeof *t->order) ||
+      !tb_array_reserve((void**)&t->spare, &t->spare_capacity, bodies + joints, sizeof *t->spare) ||
+      !tb_array_reserve((void**)&t->place, &t->place_capacity, bodies + joints, sizeof *t->place) ||
       !tb_array_reserve((void**)&t->body_scratch, &t->body_capacity, 2 * bodies, sizeof *t->body_scratch) ||
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges) ||
       !tb_array_reserve((void**)&t->components, &t->component_capacity, bodies + joints + 1, sizeof *t->components))
@@ -222,7 +227,28 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     }
   }
   t->components[t->component_count] = ordered;
-  t->body_nodes = body_nodes;
+
+  /* The nodes are stored in that order (node q is order[q]), so that every
+   * sweep of the solve walks them front to back or back to front. */
+  for (int q = 0; q < ordered; ++q) t->place[t->order[q]] = q;
+  for (int e = 0; e < at; ++e) t->edges[e] = t->place[t->edges[e]];
+  for (int q = 0; q < ordered; ++q) {
+    tb_jt_node* n = &t->spare[q];
+    int old = t->order[q];
+    *n = t->nodes[old];
+    n->body = old < body_nodes;
+    if (n->parent >= 0) n->parent = t->place[n->parent];
+    if (!n->body) {
+      if (n->a >= 0) n->a = t->place[n->a];
+      if (n->b >= 0) n->b = t->place[n->b];
+    }
+  }
+  struct tb_jt_node* sorted = t->spare;
+  int sorted_capacity = t->spare_capacity;
+  t->spare = t->nodes;
+  t->spare_capacity = t->node_capacity;
+  t->nodes = sorted;
+  t->node_capacity = sorted_capacity;
   return true;
 }
 
@@ -303,9 +329,11 @@ static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double 
 static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   double g = use_bias ? (double)t->softness.impulse_scale / (double)t->softness.mass_scale : TB_TREE_RELAX_COMPLIANCE;
-  for (int i = t->body_nodes; i < t->node_count; ++i) init_joint(w, ctx, &t->nodes[i], g);
-  for (int i = 0; i < t->body_nodes; ++i) {
+  for (int i = 0; i < t->node_count; ++i)
+    if (!t->nodes[i].body) init_joint(w, ctx, &t->nodes[i], g);
+  for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
+    if (!n->body) continue;
     const tb_solver_body* s = &ctx->states[n->ref];
     double twist = 0.0; /* h k (the rows' r . p) */
     for (int e = 0; e < n->count; ++e) {
@@ -322,7 +350,7 @@ static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
     if (n->parent < 0) continue;
-    if (i >= t->body_nodes) {
+    if (!n->body) {
       joint_block(n, n->a == n->parent, n->hp);
     } else {
       const tb_jt_node* joint = &t->nodes[n->parent];
@@ -334,7 +362,7 @@ static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
   }
   /* D_p -= H_ip^T D_i^-1 H_ip, children first */
   for (int q = t->node_count - 1; q >= 0; --q) {
-    tb_jt_node* n = &t->nodes[t->order[q]];
+    tb_jt_node* n = &t->nodes[q];
     invert(n->d, n->dof);
     if (n->parent < 0) continue;
     tb_jt_node* p = &t->nodes[n->parent];
@@ -352,7 +380,7 @@ static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
 static void node_rhs(tb_world* w, tb_step_context* ctx, int i, double bias) {
   tb_joint_tree* t = &w->joint_tree;
   tb_jt_node* n = &t->nodes[i];
-  if (i >= t->body_nodes) {
+  if (!n->body) {
     const tb_joint* j = tb_joint_at(w, n->ref);
     const tb_solver_body* a = &ctx->states[j->solver_a];
     const tb_solver_body* b = &ctx->states[j->solver_b];
@@ -381,23 +409,23 @@ static void node_rhs(tb_world* w, tb_step_context* ctx, int i, double bias) {
   n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
 }
 
-/* Whether a later relax pass solves the tree order[from, to): when one of its
- * bodies still moves (relax_activity.h). */
+/* Whether a later relax pass solves the tree of nodes [from, to): when one
+ * of its bodies still moves (relax_activity.h). */
 static bool tree_active(const tb_step_context* ctx, const tb_joint_tree* t, int from, int to) {
   for (int q = from; q < to; ++q)
-    if (t->order[q] < t->body_nodes && tb_relax_active(ctx, t->nodes[t->order[q]].ref)) return true;
+    if (t->nodes[q].body && tb_relax_active(ctx, t->nodes[q].ref)) return true;
   return false;
 }
 
-/* One tree, order[from, to): the right-hand sides, the two substitutions
+/* One tree, nodes [from, to): the right-hand sides, the two substitutions
  * through the factorisation, and the velocity changes and impulses. */
 static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
-  for (int q = from; q < to; ++q) node_rhs(w, ctx, t->order[q], bias);
+  for (int q = from; q < to; ++q) node_rhs(w, ctx, q, bias);
   /* forward, children first: y_p -= H_ip^T D_i^-1 y_i */
   for (int q = to - 1; q >= from; --q) {
-    const tb_jt_node* n = &t->nodes[t->order[q]];
+    const tb_jt_node* n = &t->nodes[q];
     if (n->parent < 0) continue;
     tb_jt_node* p = &t->nodes[n->parent];
     double dy[3] = {0.0};
@@ -408,7 +436,7 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
   }
   /* back, parents first: y becomes the solution */
   for (int q = from; q < to; ++q) {
-    tb_jt_node* n = &t->nodes[t->order[q]];
+    tb_jt_node* n = &t->nodes[q];
     double rhs[3] = {n->y[0], n->y[1], n->y[2]};
     if (n->parent >= 0) {
       const tb_jt_node* p = &t->nodes[n->parent];
@@ -422,9 +450,8 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
   }
   /* the velocity changes of the bodies and the impulses of the rows */
   for (int q = from; q < to; ++q) {
-    int i = t->order[q];
-    const tb_jt_node* n = &t->nodes[i];
-    if (i >= t->body_nodes) {
+    const tb_jt_node* n = &t->nodes[q];
+    if (!n->body) {
       for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] += (float)n->y[r];
       continue;
     }
@@ -450,6 +477,7 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
 
 size_t tb_joint_tree_bytes(const tb_joint_tree* t) {
   return (size_t)t->node_capacity * sizeof *t->nodes + (size_t)t->order_capacity * sizeof *t->order +
+         (size_t)t->spare_capacity * sizeof *t->spare + (size_t)t->place_capacity * sizeof *t->place +
          (size_t)t->body_capacity * sizeof *t->body_scratch + (size_t)t->edge_capacity * sizeof *t->edges +
          (size_t)t->component_capacity * sizeof *t->components;
 }

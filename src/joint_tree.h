@@ -15,14 +15,17 @@ struct tb_jt_node;
 typedef struct tb_joint_tree {
   struct tb_jt_node* nodes;
   int node_count, node_capacity;
-  int body_nodes; /* nodes [0, body_nodes) are bodies, the rest joints */
-  int* order;     /* parents before children */
+  struct tb_jt_node* spare; /* the other node buffer (the build sorts the nodes into it) */
+  int spare_capacity;
+  int* order; /* the build's breadth-first order, parents before children; the nodes are then stored in it */
   int order_capacity;
+  int* place; /* the build's: where each node goes in that order */
+  int place_capacity;
   int* body_scratch; /* per awake body: union-find parent and flag, then its node */
   int body_capacity;
   int* edges; /* per body node: its constraint nodes (CSR, first[] in body nodes) */
   int edge_capacity;
-  int* components; /* tree k is order[components[k], components[k + 1]) */
+  int* components; /* tree k is nodes [components[k], components[k + 1]) */
   int component_count, component_capacity;
   tb_softness softness; /* of the biased pass */
   int factored_for;     /* the relax passes' factorisation is of this position update (-1: none) */
