@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 harness=${1:-fuzz/fuzz_api.c}
 # every declaration "type name(" at the start of a line (typedefs excluded)
-names=$(grep -E '^[a-z_][a-z0-9_ ]*[ *]tb_[a-z0-9_]+\(' include/tumble.h | grep -v '^typedef' |
+names=$(grep -E '^[a-z_][a-z0-9_ *]*[ *]tb_[a-z0-9_]+\(' include/tumble.h | grep -v '^typedef' |
   sed -E 's/^.*[ *](tb_[a-z0-9_]+)\(.*$/\1/' | sort -u)
 missing=0
 for n in $names; do

@@ -1539,8 +1539,9 @@ int tb_body_get_shapes(tb_body_id body, tb_shape_id* out, int capacity);
 
 /* Debug draw: the world hands its shapes, joints, contacts and bounding boxes to
  * the game's drawing functions, in world coordinates (metres), with a colour
- * that tells each body's state. Games plug in their own renderer; the demos
- * (demos/render/) draw through it with OpenGL.
+ * that tells each body's state. Games plug in their own renderer; the
+ * off-screen renderer libtumble-render (tumble_render.h) draws through it with
+ * OpenGL.
  *
  * Fill a tb_debug_draw from tb_default_debug_draw(), set the callbacks you have
  * (a NULL callback means "skip what it would draw") and the switches, then call
