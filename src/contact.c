@@ -333,6 +333,18 @@ static bool aabbs_overlap(tb_aabb a, tb_aabb b) {
   return a.lower.x <= b.upper.x && b.lower.x <= a.upper.x && a.lower.y <= b.upper.y && b.lower.y <= a.upper.y;
 }
 
+/* Whether two shapes' boxes are so far apart that their collision keeps no
+ * point. A manifold keeps the points closer than the speculative distance,
+ * and a gap between the tight boxes along an axis is at most the shapes'
+ * distance; twice that distance leaves room for the boxes' rounding. Most
+ * contacts of a heap of debris are pairs whose fat boxes overlap while the
+ * shapes are a hand's width apart, and this skips their collision. */
+static bool boxes_apart(tb_aabb a, tb_aabb b) {
+  float reach = 2.0f * tb_units.speculative_distance;
+  return b.lower.x - a.upper.x > reach || a.lower.x - b.upper.x > reach || b.lower.y - a.upper.y > reach ||
+         a.lower.y - b.upper.y > reach;
+}
+
 /* Approach speed: the largest -(v_B - v_A) . n over the manifold's points. */
 static float approach_speed(const tb_world* w, const tb_contact* c, tb_vec2* where) {
   const tb_body* a = tb_body_at(w, c->edges[0].body);
@@ -485,8 +497,13 @@ static bool update_contact(tb_world* w, int i) {
     return false;
   }
   tb_manifold old = c->manifold;
-  collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb, tb_body_at(w, sb->body)->transform,
-                                    &c->manifold, &c->patch);
+  if (boxes_apart(sa->aabb, sb->aabb)) { /* what the collision returns for no point */
+    c->manifold = (tb_manifold){.point_count = 0};
+    c->patch = (tb_patch){.slide_min = -FLT_MAX, .slide_max = FLT_MAX};
+  } else {
+    collide_table[sa->type][sb->type](sa, tb_body_at(w, sa->body)->transform, sb, tb_body_at(w, sb->body)->transform,
+                                      &c->manifold, &c->patch);
+  }
   carry_impulses(&old, &c->manifold);
   bool touching = c->manifold.point_count > 0;
   if (c->flags & TB_CONTACT_SENSOR) { /* a sensor needs a real overlap, not a speculative point */
