@@ -7,7 +7,8 @@
  *
  *   bench_v3_tumble SCENE [STEPS]
  * prints: tumble SCENE STEPS MS_PER_STEP bodies B shapes S joints J pairs P
- * touching T awake A */
+ * touching T awake A bytes N body_bytes BB contact_bytes CB (the world's bytes,
+ * and its body and contact parts per body and per contact) */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -57,8 +58,18 @@ int main(int argc, char** argv) {
   }
   double ms = 1e3 * (cpu_seconds() - t0) / (double)(steps - 1);
   tb_counts c = tb_world_get_counts(world);
-  printf("tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d\n", sc->name, steps, ms,
-         c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count, c.awake_body_count);
+  /* memory (issue 21): the world's bytes, and the bodies' and contacts'
+   * parts per body and per contact (pairs: every contact, touching or not) */
+  tb_memory_stats mem;
+  if (tb_world_get_memory_stats(world, &mem) != TB_OK) {
+    fprintf(stderr, "%s: memory stats: %s\n", argv[0], tb_last_error());
+    return 1;
+  }
+  printf("tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d bytes %zu"
+         " body_bytes %.0f contact_bytes %.0f\n",
+         sc->name, steps, ms, c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count,
+         c.awake_body_count, mem.total, c.body_count > 0 ? (double)mem.bodies / c.body_count : 0.0,
+         c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0);
   tb_destroy_world(world);
   return 0;
 }
