@@ -142,7 +142,8 @@ void tb_default_free(void* memory, size_t size, void* context);
 
 /* Routes every allocation of tumble through alloc and free, with context.
  * Both are required (pass tb_default_alloc and tb_default_free to go back).
- * Only while no world exists (else TB_ERR_LOCKED). What tumble keeps between
+ * Only while no world and no tb_dynamic_tree exists (else TB_ERR_LOCKED: their
+ * blocks came from the allocator in place). What tumble keeps between
  * worlds (see tb_get_retained_byte_count) moves to the new allocator: it is
  * copied into blocks from alloc and its old blocks go back to the old free
  * function, so each allocator frees only its own blocks; TB_ERR_OUT_OF_MEMORY
@@ -1716,6 +1717,9 @@ tb_result tb_dynamic_tree_ray_cast(const tb_dynamic_tree* tree, const tb_dynamic
  * memory corruption breaks them). */
 tb_result tb_dynamic_tree_validate(const tb_dynamic_tree* tree);
 
+/* The bytes the tree holds through the allocator (tb_set_allocator): its
+ * record, its nodes and the proxies' user data slots; 0 for NULL. */
+size_t tb_dynamic_tree_get_byte_count(const tb_dynamic_tree* tree);
 /* Edges on the longest root-to-leaf path (0 for an empty or one-proxy tree). */
 int tb_dynamic_tree_get_height(const tb_dynamic_tree* tree);
 int tb_dynamic_tree_get_proxy_count(const tb_dynamic_tree* tree);

@@ -211,7 +211,8 @@ static inline __attribute__((always_inline)) wide_body gather(const tb_solver_bo
   return b;
 }
 
-static inline __attribute__((always_inline)) void scatter(tb_solver_body* states, const int32_t* idx, const wide_body* b) {
+static inline __attribute__((always_inline)) void scatter(tb_solver_body* states, const int32_t* idx,
+                                                          const wide_body* b) {
   tb_f4 m[4] = {b->vx, b->vy, b->w, b->inv_mass};
   transpose(m);
   memcpy(&states[idx[0]], &m[0], sizeof m[0]);
@@ -630,8 +631,8 @@ typedef struct wide_arms {
   tb_f4 rax, ray, rbx, rby;
 } wide_arms;
 
-static inline __attribute__((always_inline)) wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
-                                 const wide_body* B) {
+static inline __attribute__((always_inline)) wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* cp,
+                                                                const wide_body* A, const wide_body* B) {
   tb_f4 dx = min4(max4(B->dpx - A->dpx, -c->shift_limit), c->shift_limit);
   tb_f4 dy = min4(max4(B->dpy - A->dpy, -c->shift_limit), c->shift_limit);
   return (wide_arms){cp->rax + cp->shift_a * dx, cp->ray + cp->shift_a * dy, cp->rbx + cp->shift_b * dx,
@@ -644,7 +645,8 @@ static inline __attribute__((always_inline)) wide_arms stored_arms(const tb_wide
 }
 
 /* Keeps count of a normal impulse applied at these arms (see restitution_targets). */
-static inline __attribute__((always_inline)) void count_normal(tb_wide_point* cp, const wide_arms* arms, tb_f4 impulse) {
+static inline __attribute__((always_inline)) void count_normal(tb_wide_point* cp, const wide_arms* arms,
+                                                               tb_f4 impulse) {
   cp->applied += impulse;
   cp->applied_rax += impulse * arms->rax;
   cp->applied_ray += impulse * arms->ray;
@@ -653,8 +655,8 @@ static inline __attribute__((always_inline)) void count_normal(tb_wide_point* cp
 }
 
 /* An impulse P at each end of one point: -P on A, +P on B. */
-static inline __attribute__((always_inline)) void apply_impulse(const tb_wide_contact* c, const wide_arms* cp, tb_f4 Px, tb_f4 Py, wide_body* A,
-                                 wide_body* B) {
+static inline __attribute__((always_inline)) void apply_impulse(const tb_wide_contact* c, const wide_arms* cp, tb_f4 Px,
+                                                                tb_f4 Py, wide_body* A, wide_body* B) {
   A->vx -= c->ma * Px;
   A->vy -= c->ma * Py;
   A->w -= c->ja * (cp->rax * Py - cp->ray * Px);
@@ -664,8 +666,8 @@ static inline __attribute__((always_inline)) void apply_impulse(const tb_wide_co
 }
 
 /* (v_B + w_B x r_B) - (v_A + w_A x r_A) at one point */
-static inline __attribute__((always_inline)) void relative_velocity(const wide_arms* cp, const wide_body* A, const wide_body* B, tb_f4* dvx,
-                                     tb_f4* dvy) {
+static inline __attribute__((always_inline)) void relative_velocity(const wide_arms* cp, const wide_body* A,
+                                                                    const wide_body* B, tb_f4* dvx, tb_f4* dvy) {
   *dvx = (B->vx + -B->w * cp->rby) - (A->vx + -A->w * cp->ray);
   *dvy = (B->vy + B->w * cp->rbx) - (A->vy + A->w * cp->rax);
 }
@@ -690,8 +692,8 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
 /* How far one point's anchors have moved apart along the normal since the
  * step began, to first order in the angles (see the top); the separation
  * now is this plus base_separation. */
-static inline __attribute__((always_inline)) tb_f4 normal_motion(const tb_wide_contact* c, const tb_wide_point* cp, const wide_body* A,
-                                  const wide_body* B) {
+static inline __attribute__((always_inline)) tb_f4 normal_motion(const tb_wide_contact* c, const tb_wide_point* cp,
+                                                                 const wide_body* A, const wide_body* B) {
   /* da x r = (-da r.y, da r.x), as tb_cross_sv */
   tb_f4 prax = -A->da * cp->ray, pray = A->da * cp->rax;
   tb_f4 prbx = -B->da * cp->rby, prby = B->da * cp->rbx;
@@ -737,7 +739,8 @@ static __attribute__((noinline)) void set_slide_gaps(tb_wide_contact* c, const w
   }
 }
 
-static inline __attribute__((always_inline)) void measure_slide(tb_wide_contact* c, const wide_body* A, const wide_body* B) {
+static inline __attribute__((always_inline)) void measure_slide(tb_wide_contact* c, const wide_body* A,
+                                                                const wide_body* B) {
   tb_f4 d = c->ny * (B->dpx - A->dpx) - c->nx * (B->dpy - A->dpy) - B->da * c->lever_b + A->da * c->lever_a;
   tb_f4 beyond = max4(c->slide_min - d, d - c->slide_max);
   tb_i4 off = beyond > splat(TB_SLIDE_TOLERANCE);
@@ -747,9 +750,10 @@ static inline __attribute__((always_inline)) void measure_slide(tb_wide_contact*
 
 /* The soft terms of one point's normal impulse: its mass scale, and
  * r = v_n + bias, at separation s. */
-static inline __attribute__((always_inline)) tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp, const wide_arms* arms,
-                                  const wide_body* A, const wide_body* B, tb_f4 s, float inv_h, float push,
-                                  bool use_bias, tb_f4* mass_scale) {
+static inline __attribute__((always_inline)) tb_f4 normal_target(const tb_wide_contact* c, const tb_wide_point* cp,
+                                                                 const wide_arms* arms, const wide_body* A,
+                                                                 const wide_body* B, tb_f4 s, float inv_h, float push,
+                                                                 bool use_bias, tb_f4* mass_scale) {
   const tb_f4 zero = splat(0.0f), one = splat(1.0f);
   tb_i4 speculative = s > zero;
   tb_f4 bias;
@@ -768,8 +772,8 @@ static inline __attribute__((always_inline)) tb_f4 normal_target(const tb_wide_c
 /* Friction at one point: the tangent impulse, clamped by mu times the
  * point's normal impulse, towards the surfaces' tangent speed. Returns the
  * impulse applied. */
-static inline __attribute__((always_inline)) tb_f4 solve_friction(tb_wide_contact* c, tb_wide_point* cp, const wide_arms* arms, wide_body* A,
-                                  wide_body* B) {
+static inline __attribute__((always_inline)) tb_f4 solve_friction(tb_wide_contact* c, tb_wide_point* cp,
+                                                                  const wide_arms* arms, wide_body* A, wide_body* B) {
   tb_f4 tx = c->ny, ty = -c->nx;
   tb_f4 dvx, dvy;
   relative_velocity(arms, A, B, &dvx, &dvy);
@@ -1049,17 +1053,13 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
     int lo = group == 0 ? 0 : fixed_from, hi = group == 0 ? fixed_from : n;
     int first = backward ? hi - 1 : lo, step = backward ? -1 : 1;
     if (use_bias && stored)
-      for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx, true, false, true, false, &change);
+      for (int i = lo, b = first; i < hi; ++i, b += step) solve_wide(&wide[b], ctx, true, false, true, false, &change);
     else if (use_bias)
-      for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx, true, false, false, false, &change);
+      for (int i = lo, b = first; i < hi; ++i, b += step) solve_wide(&wide[b], ctx, true, false, false, false, &change);
     else if (measure)
-      for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx, false, true, false, true, &change);
+      for (int i = lo, b = first; i < hi; ++i, b += step) solve_wide(&wide[b], ctx, false, true, false, true, &change);
     else if (ctx->relax_all)
-      for (int i = lo, b = first; i < hi; ++i, b += step)
-        solve_wide(&wide[b], ctx, false, false, true, false, &change);
+      for (int i = lo, b = first; i < hi; ++i, b += step) solve_wide(&wide[b], ctx, false, false, true, false, &change);
     else /* a later relax pass: only blocks with a body that still moves */
       for (int i = lo, b = first; i < hi; ++i, b += step)
         if (block_active(ctx, &wide[b])) {

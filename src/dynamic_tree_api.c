@@ -2,11 +2,17 @@
  * tree (tree.c) behind an opaque handle, with the checks and messages of the
  * public API, a user data pointer per proxy and a lock against changes from
  * inside its callbacks. */
-#include <stdlib.h>
+#include <string.h>
 
 #include "error.h"
 #include "math_internal.h"
+#include "memory.h"
 #include "tree.h"
+
+/* Trees alive: the allocator may not change under them (tb_set_allocator). */
+static int live_trees;
+
+int tb_dynamic_tree_live_count(void) { return live_trees; }
 
 struct tb_dynamic_tree {
   tb_tree tree;
@@ -48,20 +54,23 @@ tb_dynamic_tree* tb_dynamic_tree_create(float margin) {
             (double)margin);
     return NULL;
   }
-  tb_dynamic_tree* t = calloc(1, sizeof *t);
+  tb_dynamic_tree* t = tb_mem_alloc(sizeof *t); /* through the game's allocator, as the nodes */
   if (t == NULL) {
     tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the tree", fn);
     return NULL;
   }
+  memset(t, 0, sizeof *t);
   (void)tb_tree_create(&t->tree, margin); /* margin checked */
+  live_trees += 1;
   return t;
 }
 
 tb_result tb_dynamic_tree_destroy(tb_dynamic_tree* t) {
   if (check_change(t, __func__) != TB_OK) return tb_last_result();
   tb_tree_destroy(&t->tree);
-  free(t->user_data);
-  free(t);
+  tb_mem_free(t->user_data, (size_t)t->capacity * sizeof *t->user_data);
+  tb_mem_free(t, sizeof *t);
+  live_trees -= 1;
   return TB_OK;
 }
 
@@ -74,7 +83,8 @@ int32_t tb_dynamic_tree_create_proxy(tb_dynamic_tree* t, tb_aabb aabb, uint64_t 
     return TB_NULL_PROXY;
   }
   if (t->capacity < t->tree.capacity) {
-    void** slots = realloc(t->user_data, (size_t)t->tree.capacity * sizeof *slots);
+    void** slots =
+        tb_mem_grow(t->user_data, (size_t)t->capacity * sizeof *slots, (size_t)t->tree.capacity * sizeof *slots);
     if (slots == NULL) {
       tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the proxies' user data", fn);
       return TB_NULL_PROXY;
@@ -190,6 +200,11 @@ tb_result tb_dynamic_tree_validate(const tb_dynamic_tree* t) {
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "%s: the user data slots do not cover the tree's %d nodes", __func__,
                    (int)t->tree.capacity);
   return TB_OK;
+}
+
+size_t tb_dynamic_tree_get_byte_count(const tb_dynamic_tree* t) {
+  if (check_tree(t, __func__) != TB_OK) return 0;
+  return sizeof *t + tb_tree_bytes(&t->tree) + (size_t)t->capacity * sizeof *t->user_data;
 }
 
 int tb_dynamic_tree_get_height(const tb_dynamic_tree* t) {

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "tree.h"
 #include "world.h"
 
 void* tb_default_alloc(size_t size, size_t alignment, void* context) {
@@ -74,6 +75,12 @@ tb_result tb_set_allocator(tb_alloc_fn* alloc, tb_free_fn* free_fn, void* contex
                    alloc == NULL ? "alloc" : "free");
   tb_result r = tb_refuse_while_worlds_exist("tb_set_allocator");
   if (r != TB_OK) return r;
+  int trees = tb_dynamic_tree_live_count();
+  if (trees > 0)
+    return tb_fail(NULL, TB_ERR_LOCKED,
+                   "tb_set_allocator: %d dynamic tree%s exist%s, with blocks from the allocator in place (destroy them "
+                   "first)",
+                   trees, trees == 1 ? "" : "s", trees == 1 ? "s" : "");
   if (!tb_world_histories_move(alloc, free_fn, context))
     return tb_fail(NULL, TB_ERR_OUT_OF_MEMORY,
                    "tb_set_allocator: the new allocator had no memory for the handle history (%zu bytes) that tumble "

@@ -68,8 +68,8 @@ typedef struct tb_step_context {
    * distance from its centre of mass to its farthest point) */
   int32_t* changed_in;
   const float* reach;
-  int relax_pass;  /* the current relax pass, counted from 1 over the step */
-  bool relax_all;  /* every constraint is solved in this relax pass (and nothing recorded) */
+  int relax_pass;   /* the current relax pass, counted from 1 over the step */
+  bool relax_all;   /* every constraint is solved in this relax pass (and nothing recorded) */
   int relax_solved; /* contact blocks the last relax pass solved */
 } tb_step_context;
 

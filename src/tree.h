@@ -77,6 +77,9 @@ void tb_tree_destroy(tb_tree* tree);
 /* Bytes the tree's node array holds. */
 static inline size_t tb_tree_bytes(const tb_tree* tree) { return (size_t)tree->capacity * sizeof *tree->nodes; }
 
+/* How many public trees (tb_dynamic_tree, dynamic_tree_api.c) exist. */
+int tb_dynamic_tree_live_count(void);
+
 /* Insert a proxy for a tight AABB (finite, lower <= upper, within TB_MAX_LENGTH).
  * Returns its id, or TB_TREE_NULL on bad input or when out of memory. */
 int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits, int32_t user_id);

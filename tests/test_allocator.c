@@ -186,6 +186,32 @@ START_TEST(counting_allocator_sees_every_byte_back) {
 }
 END_TEST
 
+/* A standalone tree's blocks come from the allocator too: its byte count is
+ * what the allocator holds for it as it grows, and the allocator cannot be
+ * changed while it lives. */
+START_TEST(dynamic_tree_bytes_come_from_the_allocator) {
+  counter c = {0};
+  use_counter(&c);
+  size_t before = c.live_bytes;
+  tb_dynamic_tree* t = tb_dynamic_tree_create(0.1f);
+  ck_assert_ptr_nonnull(t);
+  ck_assert_uint_eq(c.live_bytes - before, tb_dynamic_tree_get_byte_count(t));
+  size_t empty = tb_dynamic_tree_get_byte_count(t);
+  for (int k = 0; k < 100; ++k) {
+    tb_aabb box = {{(float)k, 0.0f}, {(float)k + 0.5f, 0.5f}};
+    ck_assert_int_ne(tb_dynamic_tree_create_proxy(t, box, 1, NULL), TB_NULL_PROXY);
+    ck_assert_uint_eq(c.live_bytes - before, tb_dynamic_tree_get_byte_count(t));
+  }
+  ck_assert_uint_gt(tb_dynamic_tree_get_byte_count(t), empty);
+  ck_assert_int_eq(tb_set_allocator(tb_default_alloc, tb_default_free, NULL), TB_ERR_LOCKED);
+  ck_assert_ptr_nonnull(strstr(tb_last_error(), "dynamic tree"));
+  ck_assert_uint_eq(tb_dynamic_tree_get_byte_count(NULL), 0);
+  ck_assert_int_eq(tb_dynamic_tree_destroy(t), TB_OK);
+  ck_assert_uint_eq(c.live_bytes, before);
+  stop_counting(&c);
+}
+END_TEST
+
 /* The parts add up to the total, and each part is what its objects hold. */
 START_TEST(memory_stats_add_up_and_follow_the_bodies) {
   counter c = {0};
@@ -363,6 +389,7 @@ Suite* allocator_suite(void) {
   TCase* tc = tcase_create("core");
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, counting_allocator_sees_every_byte_back);
+  tcase_add_test(tc, dynamic_tree_bytes_come_from_the_allocator);
   tcase_add_test(tc, memory_stats_add_up_and_follow_the_bodies);
   tcase_add_test(tc, failing_allocations_never_crash_or_leak);
   tcase_add_test(tc, a_step_without_memory_reports_it);

@@ -65,11 +65,12 @@ int main(int argc, char** argv) {
     fprintf(stderr, "%s: memory stats: %s\n", argv[0], tb_last_error());
     return 1;
   }
-  printf("tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d bytes %zu"
-         " body_bytes %.0f contact_bytes %.0f\n",
-         sc->name, steps, ms, c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count,
-         c.awake_body_count, mem.total, c.body_count > 0 ? (double)mem.bodies / c.body_count : 0.0,
-         c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0);
+  printf(
+      "tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d bytes %zu"
+      " body_bytes %.0f contact_bytes %.0f\n",
+      sc->name, steps, ms, c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count,
+      c.awake_body_count, mem.total, c.body_count > 0 ? (double)mem.bodies / c.body_count : 0.0,
+      c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0);
   tb_destroy_world(world);
   return 0;
 }
