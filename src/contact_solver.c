@@ -70,39 +70,51 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
 
 /* Four contacts of one colour, field by field. A lane holds one contact
  * constraint; a contact with one point has an inert second point (no mass,
- * far apart) so that every lane has two. */
+ * far apart) so that every lane has two. Each contact block is laid out hot
+ * first: what every pass reads (the header up to p, and per point a
+ * tb_wide_point), then what only the first pass after a position update,
+ * the push-out, restitution and prepare read (the rest, and per point a
+ * tb_wide_anchor). A relax pass then streams half the bytes it would with
+ * the fields mixed (large_pyramid holds 4.7 MB of blocks, beyond L2). */
 typedef struct tb_wide_point {
-  tb_f4 rax, ray, rbx, rby;                 /* anchors from each centre of mass, world-oriented, at step start */
   tb_f4 now_rax, now_ray, now_rbx, now_rby; /* the arms to the common point now (see arms_now) */
-  tb_f4 live;                               /* 1 for a point of the manifold, 0 for an inert one */
-  tb_f4 base_separation;                    /* s0, the separation at the step start */
+  tb_f4 separation;                         /* s at the last position update (see tb_contact_solver_solve) */
   tb_f4 push_depth;                         /* the soft push acts down to this depth, the push-out beyond */
   tb_f4 normal_mass, tangent_mass;
   tb_f4 normal_impulse, tangent_impulse, max_normal_impulse;
+} tb_wide_point;
+
+typedef struct tb_wide_anchor {
+  tb_f4 rax, ray, rbx, rby; /* anchors from each centre of mass, world-oriented, at step start */
+  tb_f4 live;               /* 1 for a point of the manifold, 0 for an inert one */
+  tb_f4 base_separation;    /* s0, the separation at the step start */
   /* the normal impulses applied in the step, summed, and summed times the
    * arms they were applied at (restitution's J_e) */
   tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
   tb_f4 shift_a, shift_b;    /* the common point's share of the relative displacement, per arm (see arms_now) */
   tb_f4 collided_separation; /* s0 as collided; base_separation differs past the patch's end (measure_slide) */
-  tb_f4 separation;          /* s at the last position update (see tb_contact_solver_solve) */
-} tb_wide_point;
+} tb_wide_anchor;
 
 typedef struct tb_wide_contact {
-  tb_f4 nx, ny, friction, tangent_speed, rolling_resistance, rolling_mass, rolling_impulse;
-  tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
-  tb_f4 shift_limit;    /* how far (per axis) the arms follow the relative displacement (see arms_now) */
-  /* the contact patch (tb_patch): how far B's incident core may slide along
-   * the tangent before the features part, the normal distances from each
-   * centre of mass to where that slide is measured, and the cores' radii */
-  tb_f4 slide_min, slide_max, lever_a, lever_b, core_radius;
-  tb_f4 bias_rate, mass_scale;
-  /* both points' normal impulses solved together: K (symmetric) and its inverse */
-  tb_f4 k11, k12, k22, n11, n12, n22, block; /* block: 1 where both points are solved together */
-  tb_wide_point p[2];
   int32_t a[4], b[4]; /* solver bodies */
   int32_t rolling;    /* any lane with rolling resistance */
   int32_t bouncy;     /* any lane with restitution (which needs the arms the impulses acted at) */
   int32_t slid_off;   /* any lane past its patch by more than TB_SLIDE_TOLERANCE */
+  int32_t unused;     /* (the lanes' fields start on 16 bytes) */
+  tb_f4 nx, ny, friction, tangent_speed;
+  tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
+  tb_f4 bias_rate, mass_scale;
+  /* both points' normal impulses solved together: K (symmetric) and its inverse */
+  tb_f4 k11, k12, k22, n11, n12, n22, block; /* block: 1 where both points are solved together */
+  tb_wide_point p[2];
+  /* cold from here */
+  tb_f4 rolling_resistance, rolling_mass, rolling_impulse;
+  tb_f4 shift_limit; /* how far (per axis) the arms follow the relative displacement (see arms_now) */
+  /* the contact patch (tb_patch): how far B's incident core may slide along
+   * the tangent before the features part, the normal distances from each
+   * centre of mass to where that slide is measured, and the cores' radii */
+  tb_f4 slide_min, slide_max, lever_a, lever_b, core_radius;
+  tb_wide_anchor q[2];
 } tb_wide_contact;
 
 /* What a contact constraint keeps besides its lane: where the lane is, and
@@ -244,7 +256,7 @@ static inline void set_masses(tb_wide_contact* wc) {
   tb_f4 rn[2][2]; /* r x n of each point at A and B, for the block terms */
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* wp = &wc->p[p];
-    tb_i4 live = wp->live > zero;
+    tb_i4 live = wc->q[p].live > zero;
     tb_f4 rax = wp->now_rax, ray = wp->now_ray, rbx = wp->now_rbx, rby = wp->now_rby;
     tb_f4 rna = rax * ny - ray * nx, rnb = rbx * ny - rby * nx;
     tb_f4 rta = rax * ty - ray * tx, rtb = rbx * ty - rby * tx;
@@ -254,7 +266,7 @@ static inline void set_masses(tb_wide_contact* wc) {
     rn[p][1] = blend(live, rnb, zero);
   }
   tb_f4 r1a = rn[0][0], r1b = rn[0][1], r2a = rn[1][0], r2b = rn[1][1];
-  tb_i4 two = wc->p[1].live > zero;
+  tb_i4 two = wc->q[1].live > zero;
   tb_f4 k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
   tb_f4 k22 = blend(two, ma + mb + ja * r2a * r2a + jb * r2b * r2b, zero);
   tb_f4 k12 = blend(two, ma + mb + ja * r1a * r2a + jb * r1b * r2b, zero);
@@ -334,6 +346,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* wp = &wc->p[p];
+    tb_wide_anchor* wq = &wc->q[p];
     tb_i4 used = point_count > (tb_i4){p, p, p, p};
     /* ra = point - centre of A, rb likewise; r x n and r x t (tb_cross) */
     tb_f4 rax = LANES(c, manifold.points[p].point.x) - cax, ray = LANES(c, manifold.points[p].point.y) - cay;
@@ -344,24 +357,24 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
       wc->lever_a = rax * nx + ray * ny + LANES(c, patch.offset_a);
       wc->lever_b = rbx * nx + rby * ny + LANES(c, patch.offset_b);
     }
-    wp->rax = blend(used, rax, zero);
-    wp->ray = blend(used, ray, zero);
-    wp->rbx = blend(used, rbx, zero);
-    wp->rby = blend(used, rby, zero);
-    wp->now_rax = wp->rax;
-    wp->now_ray = wp->ray;
-    wp->now_rbx = wp->rbx;
-    wp->now_rby = wp->rby;
-    wp->live = blend(used, one, zero);
+    wq->rax = blend(used, rax, zero);
+    wq->ray = blend(used, ray, zero);
+    wq->rbx = blend(used, rbx, zero);
+    wq->rby = blend(used, rby, zero);
+    wp->now_rax = wq->rax;
+    wp->now_ray = wq->ray;
+    wp->now_rbx = wq->rbx;
+    wp->now_rby = wq->rby;
+    wq->live = blend(used, one, zero);
     /* the manifold is of the float centres; the true gap adds the bodies'
      * center_residual along the normal */
     tb_f4 residual_gap = (LANES(bb, center_residual.x) - LANES(ba, center_residual.x)) * nx +
                          (LANES(bb, center_residual.y) - LANES(ba, center_residual.y)) * ny;
-    wp->base_separation = blend(used, LANES(c, manifold.points[p].separation) + residual_gap, one);
+    wq->base_separation = blend(used, LANES(c, manifold.points[p].separation) + residual_gap, one);
     wp->normal_impulse = blend(used, normal_impulse, zero);
     wp->tangent_impulse = blend(used, tangent_impulse, zero);
     wp->max_normal_impulse = zero;
-    wp->applied = wp->applied_rax = wp->applied_ray = wp->applied_rbx = wp->applied_rby = zero;
+    wq->applied = wq->applied_rax = wq->applied_ray = wq->applied_rbx = wq->applied_rby = zero;
     /* the common point (see arms_now): a vertex of B on an edge of A moves
      * with B (beta = 1), a vertex of A on an edge of B with A (beta = 0);
      * else, and against a body that impulses do not move, by the inverse
@@ -372,9 +385,9 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_i4 vertex_b = both_move & (edge_a == bit) & (edge_b != bit);
     tb_i4 vertex_a = both_move & (edge_a != bit) & (edge_b == bit);
     tb_f4 beta = blend(vertex_b, one, blend(vertex_a, zero, mass_share));
-    wp->shift_a = beta;
-    wp->shift_b = beta - one;
-    wp->collided_separation = wp->base_separation;
+    wq->shift_a = beta;
+    wq->shift_b = beta - one;
+    wq->collided_separation = wq->base_separation;
     /* (v_B + w_B x rb - v_A - w_A x ra) . n */
     tb_f4 vax = A.vx + -A.w * ray, vay = A.vy + A.w * rax;
     tb_f4 vbx = B.vx + -B.w * rby, vby = B.vy + B.w * rbx;
@@ -400,7 +413,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
    * approach (speed x dt) can drive in during this one. Bodies created or
    * moved into each other have no approach, and a pile is still pushed out;
    * against static and kinematic bodies nothing changes (no momentum to keep). */
-  tb_f4 depth = max4(max4(-wc->p[0].base_separation, -wc->p[1].base_separation), zero);
+  tb_f4 depth = max4(max4(-wc->q[0].base_separation, -wc->q[1].base_separation), zero);
   tb_f4 driven = blend(rigid_other, zero, max4(max4(-approach[0], -approach[1]), zero) * splat(ctx->dt));
   tb_f4 impact_depth = min4(depth, LANES(c, impact_depth)) + driven;
   wc->p[0].push_depth =
@@ -422,9 +435,9 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
 
 /* An unused lane: both points inert, both bodies the static dummy. */
 static void clear_lane(tb_wide_contact* wc, int lane, int static_index) {
-  tb_f4* fields = (tb_f4*)wc;
-  for (size_t f = 0; f < offsetof(tb_wide_contact, a) / sizeof(tb_f4); ++f) fields[f][lane] = 0.0f;
-  for (int p = 0; p < 2; ++p) wc->p[p].base_separation[lane] = wc->p[p].collided_separation[lane] = 1.0f;
+  tb_f4* fields = &wc->nx;
+  for (size_t f = 0; f < (sizeof *wc - offsetof(tb_wide_contact, nx)) / sizeof(tb_f4); ++f) fields[f][lane] = 0.0f;
+  for (int p = 0; p < 2; ++p) wc->q[p].base_separation[lane] = wc->q[p].collided_separation[lane] = 1.0f;
   wc->a[lane] = wc->b[lane] = static_index;
 }
 
@@ -505,7 +518,7 @@ static bool lane_is_deep(const tb_wide_contact* c, int lane) {
   bool deep = false;
   for (int p = 0; p < 2; ++p) {
     const tb_wide_point* wp = &c->p[p];
-    deep |= wp->base_separation[lane] + wp->push_depth[lane] < 0.5f * TB_DEEP_OVERLAP && wp->normal_mass[lane] > 0.0f;
+    deep |= c->q[p].base_separation[lane] + wp->push_depth[lane] < 0.5f * TB_DEEP_OVERLAP && wp->normal_mass[lane] > 0.0f;
   }
   return deep;
 }
@@ -631,7 +644,7 @@ typedef struct wide_arms {
   tb_f4 rax, ray, rbx, rby;
 } wide_arms;
 
-static inline __attribute__((always_inline)) wide_arms arms_now(const tb_wide_contact* c, const tb_wide_point* cp,
+static inline __attribute__((always_inline)) wide_arms arms_now(const tb_wide_contact* c, const tb_wide_anchor* cp,
                                                                 const wide_body* A, const wide_body* B) {
   tb_f4 dx = min4(max4(B->dpx - A->dpx, -c->shift_limit), c->shift_limit);
   tb_f4 dy = min4(max4(B->dpy - A->dpy, -c->shift_limit), c->shift_limit);
@@ -645,7 +658,7 @@ static inline __attribute__((always_inline)) wide_arms stored_arms(const tb_wide
 }
 
 /* Keeps count of a normal impulse applied at these arms (see restitution_targets). */
-static inline __attribute__((always_inline)) void count_normal(tb_wide_point* cp, const wide_arms* arms,
+static inline __attribute__((always_inline)) void count_normal(tb_wide_anchor* cp, const wide_arms* arms,
                                                                tb_f4 impulse) {
   cp->applied += impulse;
   cp->applied_rax += impulse * arms->rax;
@@ -678,7 +691,7 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
     wide_arms arms = stored_arms(cp);
-    if (c->bouncy) count_normal(cp, &arms, cp->normal_impulse);
+    if (c->bouncy) count_normal(&c->q[p], &arms, cp->normal_impulse);
     tb_f4 Px = cp->normal_impulse * c->nx + cp->tangent_impulse * tx;
     tb_f4 Py = cp->normal_impulse * c->ny + cp->tangent_impulse * ty;
     apply_impulse(c, &arms, Px, Py, &A, &B);
@@ -692,7 +705,7 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
 /* How far one point's anchors have moved apart along the normal since the
  * step began, to first order in the angles (see the top); the separation
  * now is this plus base_separation. */
-static inline __attribute__((always_inline)) tb_f4 normal_motion(const tb_wide_contact* c, const tb_wide_point* cp,
+static inline __attribute__((always_inline)) tb_f4 normal_motion(const tb_wide_contact* c, const tb_wide_anchor* cp,
                                                                  const wide_body* A, const wide_body* B) {
   /* da x r = (-da r.y, da r.x), as tb_cross_sv */
   tb_f4 prax = -A->da * cp->ray, pray = A->da * cp->rax;
@@ -731,7 +744,7 @@ static __attribute__((noinline)) void set_slide_gaps(tb_wide_contact* c, const w
   tb_i4 off = beyond > splat(TB_SLIDE_TOLERANCE);
   c->slid_off = off[0] | off[1] | off[2] | off[3];
   for (int p = 0; p < 2; ++p) {
-    tb_wide_point* cp = &c->p[p];
+    tb_wide_anchor* cp = &c->q[p];
     tb_f4 moved = normal_motion(c, cp, A, B), s = moved + cp->collided_separation;
     tb_f4 gap = max4(s + c->core_radius, splat(0.0f)), squared = beyond * beyond + gap * gap, ends;
     for (int lane = 0; lane < 4; ++lane) ends[lane] = sqrtf(squared[lane]);
@@ -807,8 +820,8 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   wide_arms arms1 = stored_arms(p1), arms2 = stored_arms(p2);
   tb_f4 ms1, ms2;
   if (measure) measure_slide(c, &A, &B); /* once per position update: later passes see the same positions */
-  tb_f4 s1 = stored ? p1->separation : normal_motion(c, p1, &A, &B) + p1->base_separation;
-  tb_f4 s2 = stored ? p2->separation : normal_motion(c, p2, &A, &B) + p2->base_separation;
+  tb_f4 s1 = stored ? p1->separation : normal_motion(c, &c->q[0], &A, &B) + c->q[0].base_separation;
+  tb_f4 s2 = stored ? p2->separation : normal_motion(c, &c->q[1], &A, &B) + c->q[1].base_separation;
   if (measure) p1->separation = s1, p2->separation = s2;
   tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, s1, inv_h, push, use_bias, &ms1);
   tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, s2, inv_h, push, use_bias, &ms2);
@@ -840,12 +853,12 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   p1->max_normal_impulse = max4(p1->max_normal_impulse, x1);
   tb_f4 d1 = x1 - a1;
   apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
-  if (c->bouncy) count_normal(p1, &arms1, d1);
+  if (c->bouncy) count_normal(&c->q[0], &arms1, d1);
   p2->normal_impulse = x2;
   p2->max_normal_impulse = max4(p2->max_normal_impulse, x2);
   tb_f4 d2 = x2 - a2;
   apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
-  if (c->bouncy) count_normal(p2, &arms2, d2);
+  if (c->bouncy) count_normal(&c->q[1], &arms2, d2);
   /* the normal speed each point's change made (its own K_ii; the coupling
    * term is left out), for the relax passes' stop */
   tb_f4 normal_change = max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22);
@@ -920,11 +933,12 @@ void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
        * second point (no mass) gets r = 0 and never moves */
       for (int p = 0; p < 2; ++p) {
         const tb_wide_point* cp = &c->p[p];
-        ra[p] = (tb_vec2){cp->rax[lane], cp->ray[lane]};
-        rb[p] = (tb_vec2){cp->rbx[lane], cp->rby[lane]};
+        const tb_wide_anchor* cq = &c->q[p];
+        ra[p] = (tb_vec2){cq->rax[lane], cq->ray[lane]};
+        rb[p] = (tb_vec2){cq->rbx[lane], cq->rby[lane]};
         /* the separation now, to first order in the angles (as normal_target) */
         tb_vec2 moved = tb_sub(tb_add(sb->dp, tb_cross_sv(sb->da, rb[p])), tb_add(sa->dp, tb_cross_sv(sa->da, ra[p])));
-        float s = cp->base_separation[lane] + tb_dot(moved, n);
+        float s = cq->base_separation[lane] + tb_dot(moved, n);
         float target = fminf(rate * fmaxf(-cp->push_depth[lane] - s, 0.0f), push);
         r[p] = cp->normal_mass[lane] > 0.0f ? push_speed(ua, ub, ra[p], rb[p], n) - target : 0.0f;
       }
@@ -988,8 +1002,9 @@ void tb_contact_solver_update_arms(tb_world* w, tb_step_context* ctx) {
     tb_f4 moved = zero;
     for (int p = 0; p < 2; ++p) {
       tb_wide_point* cp = &c->p[p];
-      wide_arms arms = arms_now(c, cp, &A, &B);
-      tb_f4 dx = arms.rax - cp->rax, dy = arms.ray - cp->ray, ex = arms.rbx - cp->rbx, ey = arms.rby - cp->rby;
+      const tb_wide_anchor* cq = &c->q[p];
+      wide_arms arms = arms_now(c, cq, &A, &B);
+      tb_f4 dx = arms.rax - cq->rax, dy = arms.ray - cq->ray, ex = arms.rbx - cq->rbx, ey = arms.rby - cq->rby;
       moved = max4(moved, max4(max4(max4(dx, -dx), max4(dy, -dy)), max4(max4(ex, -ex), max4(ey, -ey))));
       cp->now_rax = arms.rax;
       cp->now_ray = arms.ray;
@@ -1114,13 +1129,14 @@ static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact
   cc->bouncing = 0;
   for (int p = 0; p < cc->point_count; ++p) {
     const tb_wide_point* cp = &wc->p[p];
+    const tb_wide_anchor* cq = &wc->q[p];
     if (cp->max_normal_impulse[lane] == 0.0f || !(cp->normal_mass[lane] > 0.0f)) continue;
-    tb_vec2 ra0 = {cp->rax[lane], cp->ray[lane]}, rb0 = {cp->rbx[lane], cp->rby[lane]};
-    float applied = cp->applied[lane];
+    tb_vec2 ra0 = {cq->rax[lane], cq->ray[lane]}, rb0 = {cq->rbx[lane], cq->rby[lane]};
+    float applied = cq->applied[lane];
     tb_vec2 rea = ra0, reb = rb0;
     if (applied > 0.0f) {
-      rea = tb_scale(1.0f / applied, (tb_vec2){cp->applied_rax[lane], cp->applied_ray[lane]});
-      reb = tb_scale(1.0f / applied, (tb_vec2){cp->applied_rbx[lane], cp->applied_rby[lane]});
+      rea = tb_scale(1.0f / applied, (tb_vec2){cq->applied_rax[lane], cq->applied_ray[lane]});
+      reb = tb_scale(1.0f / applied, (tb_vec2){cq->applied_rbx[lane], cq->applied_rby[lane]});
     }
     float before = cc->relative_velocity[p] + tb_dot(n, tb_sub(tb_cross_sv(cc->spin_b, tb_sub(reb, rb0)),
                                                                tb_cross_sv(cc->spin_a, tb_sub(rea, ra0))));
