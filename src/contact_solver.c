@@ -81,7 +81,7 @@ typedef struct tb_wide_point {
   tb_f4 separation;                         /* s at the last position update (see tb_contact_solver_solve) */
   tb_f4 push_depth;                         /* the soft push acts down to this depth, the push-out beyond */
   tb_f4 normal_mass, tangent_mass;
-  tb_f4 normal_impulse, tangent_impulse, max_normal_impulse;
+  tb_f4 normal_impulse, tangent_impulse;
 } tb_wide_point;
 
 typedef struct tb_wide_anchor {
@@ -91,6 +91,7 @@ typedef struct tb_wide_anchor {
   /* the normal impulses applied in the step, summed, and summed times the
    * arms they were applied at (restitution's J_e) */
   tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
+  tb_f4 max_normal_impulse; /* the largest normal impulse of the step (kept where the block is bouncy) */
   tb_f4 shift_a, shift_b;    /* the common point's share of the relative displacement, per arm (see arms_now) */
   tb_f4 collided_separation; /* s0 as collided; base_separation differs past the patch's end (measure_slide) */
 } tb_wide_anchor;
@@ -373,7 +374,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     wq->base_separation = blend(used, LANES(c, manifold.points[p].separation) + residual_gap, one);
     wp->normal_impulse = blend(used, normal_impulse, zero);
     wp->tangent_impulse = blend(used, tangent_impulse, zero);
-    wp->max_normal_impulse = zero;
+    wq->max_normal_impulse = zero;
     wq->applied = wq->applied_rax = wq->applied_ray = wq->applied_rbx = wq->applied_rby = zero;
     /* the common point (see arms_now): a vertex of B on an edge of A moves
      * with B (beta = 1), a vertex of A on an edge of B with A (beta = 0);
@@ -850,15 +851,19 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   x1 = blend(both, both1, x1);
   x2 = blend(both, both2, x2);
   p1->normal_impulse = x1;
-  p1->max_normal_impulse = max4(p1->max_normal_impulse, x1);
   tb_f4 d1 = x1 - a1;
   apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
-  if (c->bouncy) count_normal(&c->q[0], &arms1, d1);
+  if (c->bouncy) {
+    count_normal(&c->q[0], &arms1, d1);
+    c->q[0].max_normal_impulse = max4(c->q[0].max_normal_impulse, x1);
+  }
   p2->normal_impulse = x2;
-  p2->max_normal_impulse = max4(p2->max_normal_impulse, x2);
   tb_f4 d2 = x2 - a2;
   apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
-  if (c->bouncy) count_normal(&c->q[1], &arms2, d2);
+  if (c->bouncy) {
+    count_normal(&c->q[1], &arms2, d2);
+    c->q[1].max_normal_impulse = max4(c->q[1].max_normal_impulse, x2);
+  }
   /* the normal speed each point's change made (its own K_ii; the coupling
    * term is left out), for the relax passes' stop */
   tb_f4 normal_change = max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22);
@@ -1130,7 +1135,7 @@ static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact
   for (int p = 0; p < cc->point_count; ++p) {
     const tb_wide_point* cp = &wc->p[p];
     const tb_wide_anchor* cq = &wc->q[p];
-    if (cp->max_normal_impulse[lane] == 0.0f || !(cp->normal_mass[lane] > 0.0f)) continue;
+    if (cq->max_normal_impulse[lane] == 0.0f || !(cp->normal_mass[lane] > 0.0f)) continue;
     tb_vec2 ra0 = {cq->rax[lane], cq->ray[lane]}, rb0 = {cq->rbx[lane], cq->rby[lane]};
     float applied = cq->applied[lane];
     tb_vec2 rea = ra0, reb = rb0;
