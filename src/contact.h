@@ -3,6 +3,7 @@
 #define TB_CONTACT_H
 
 #include "manifold.h"
+#include "manifold_reuse.h"
 #include "tumble.h"
 
 enum {
@@ -24,6 +25,7 @@ typedef struct tb_contact {
   tb_contact_edge edges[2];
   tb_manifold manifold; /* points carry the impulses kept for warm starting */
   tb_patch patch;       /* where the touching features end (the solver stops a point that slid off) */
+  tb_manifold_cache cache; /* the manifold as last collided, for reuse (manifold_reuse.h) */
   float friction, restitution;
   float rolling_resistance; /* coefficient times radius (m) */
   float tangent_speed;

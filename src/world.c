@@ -731,6 +731,18 @@ static void hash_contact(hasher* s, int i, const tb_contact* c) {
     hash_word(s, p->id);
     hash_floats(s, (const float[]){p->separation, p->normal_impulse, p->tangent_impulse}, 3);
   }
+  /* the manifold kept for reuse: the next step's manifold depends on it */
+  const tb_manifold_cache* k = &c->cache;
+  hash_int(s, k->point_count);
+  if (k->point_count > 0) {
+    hash_vec(s, k->normal);
+    hash_vec(s, k->relative_center);
+    hash_floats(s, (const float[]){k->relative_rot.c, k->relative_rot.s}, 2);
+    for (int i = 0; i < k->point_count && i < 2; ++i) {
+      hash_vec(s, k->points[i]);
+      hash_floats(s, &k->separation[i], 1);
+    }
+  }
 }
 
 static void hash_joint(hasher* s, int i, const tb_joint* j) {
