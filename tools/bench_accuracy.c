@@ -1,6 +1,7 @@
 /* Accuracy benchmark: run time against error, tumble and Box2D 2.4.1 side by
- * side (issue 6). Every scene is written once against tools/bench/engine.h
- * and built with the same parameters in both engines; each error metric is
+ * side (issue 6), and Box2D v3 too in make bench-v3's build (issue 21). Every
+ * scene is written once against tools/bench/engine.h and built with the same
+ * parameters in each engine; each error metric is
  * taken against a closed form (or, for far_pyramid, against the same engine's
  * run at the origin), defined at each scene below and in results/scenes.tsv.
  *
@@ -28,7 +29,13 @@
  * --quick: fewer settings (tumble 1, 4, 8 substeps at 60 Hz and 4 substeps at
  * 30 and 120 Hz; Box2D 4/2, 8/3, 16/6 at 60 Hz and 8/3 at 30 and 120 Hz), one
  * run, shorter and smaller large scenes. Exit status 1 when a step fails or a
- * metric is not finite (NaN), so CI catches a broken engine or bench. */
+ * metric is not finite (NaN), so CI catches a broken engine or bench.
+ *
+ * Built with -DBENCH_WITH_V3 (build/bench/bench_accuracy_v3, make bench-v3
+ * only, linked with tools/bench_engine_v3.c and a v3 libbox2d.a), the sweep
+ * also runs Box2D v3 ("box2d_v3") at substeps 1, 2, 4, 8 and the same time
+ * steps; its default is 60 Hz, 4 substeps; --quick keeps the substeps and
+ * rates tumble keeps. Without it nothing of v3 is compiled or run. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdint.h>
@@ -846,6 +853,11 @@ typedef struct engine_setting {
 
 static const char* k_integrators[3] = {"euler", "midpoint", "rk4"};
 
+/* --quick's substep settings (tumble's, and v3's in bench_accuracy_v3) */
+static bool quick_substeps(int hz, int substeps) {
+  return (hz == 60 && (substeps == 1 || substeps == 4 || substeps == 8)) || ((hz == 30 || hz == 120) && substeps == 4);
+}
+
 static int make_settings(engine_setting* out, bool integrators, int max_hz) {
   static const int hz_full[4] = {30, 60, 120, 240};
   static const int substeps_full[5] = {1, 2, 4, 8, 16};
@@ -857,9 +869,7 @@ static int make_settings(engine_setting* out, bool integrators, int max_hz) {
     for (int k = 0; k < kinds; ++k) {
       for (int q = 0; q < 5; ++q) {
         int ss = substeps_full[q];
-        if (g_quick && !((hz_full[h] == 60 && (ss == 1 || ss == 4 || ss == 8)) ||
-                         ((hz_full[h] == 30 || hz_full[h] == 120) && ss == 4)))
-          continue;
+        if (g_quick && !quick_substeps(hz_full[h], ss)) continue;
         /* integrator index = tb_integrator; scenes without the sweep use
          * tumble's default, midpoint (1), which is also the default row */
         int integrator = integrators ? k : 1;
@@ -873,6 +883,15 @@ static int make_settings(engine_setting* out, bool integrators, int max_hz) {
       engine_setting es = {&bench_box2d_engine, {dt, 0, 0, iters[q][0], iters[q][1]}, hz_full[h] == 60 && q == 1};
       out[n++] = es;
     }
+#ifdef BENCH_WITH_V3
+    /* v3 at substeps 1, 2, 4, 8; its default is 4 at 60 Hz */
+    for (int q = 0; q < 4; ++q) {
+      int ss = substeps_full[q];
+      if (g_quick && !quick_substeps(hz_full[h], ss)) continue;
+      engine_setting es = {&bench_box2d_v3_engine, {dt, ss, 0, 0, 0}, hz_full[h] == 60 && ss == 4};
+      out[n++] = es;
+    }
+#endif
   }
   return n;
 }
@@ -915,6 +934,10 @@ static bool run_setting(const scene* sc, const engine_setting* es, int runs, FIL
   char label[64];
   if (tumble) {
     snprintf(label, sizeof label, "tumble %3d Hz %2d sub %s", hz, es->s.substeps, integrator);
+#ifdef BENCH_WITH_V3
+  } else if (es->e == &bench_box2d_v3_engine) {
+    snprintf(label, sizeof label, "v3     %3d Hz %2d sub", hz, es->s.substeps);
+#endif
   } else {
     snprintf(label, sizeof label, "box2d  %3d Hz %2d/%-2d", hz, es->s.velocity_iterations, es->s.position_iterations);
   }
