@@ -11,9 +11,11 @@
  *   rad), which would tilt the inclines and swamp constant_spin's angle error.
  *   Rotations are built here from cos/sin and read back with atan2, in double.
  * - unwrapped angles: 2.4.1 and tumble report a body's angle without wrapping
- *   (constant_spin turns 6 rad); v3's rotation wraps at pi. After each step the
- *   wrapper adds each moved body's turn (from v3's body move events) to the
- *   angle it keeps, so this small cost is inside the timed step call.
+ *   (constant_spin turns 6 rad); v3's rotation wraps at pi. After each step
+ *   the wrapper counts, from v3's body move events, the moved bodies whose
+ *   rotation crossed the wrap at pi (no atan2 there: this cost is inside the
+ *   timed step call, a few multiplications per moved body); v3 caps a body's
+ *   turn at pi/4 a step (B2_MAX_ROTATION), well inside the pi this needs.
  * v3's polygons have no skin (radius 0), so polygon_skin is 0. */
 #include <math.h>
 #include <stdint.h>
@@ -24,12 +26,19 @@
 
 #define V3_PI 3.14159265358979323846
 
+/* A body's rotation when the wrapper last saw it, and how many times it has
+ * turned through the wrap at pi since (+1 counter-clockwise). */
+typedef struct v3_turns {
+  b2Rot q;
+  int turns;
+} v3_turns;
+
 typedef struct v3_world {
   b2WorldId id;
   bench_setting setting;
   double spring_k;
   b2BodyId* bodies;
-  double* angles; /* unwrapped angle of each body, updated after each step */
+  v3_turns* turns; /* of each body */
   int count, capacity;
 } v3_world;
 
@@ -63,7 +72,7 @@ static void v3_destroy(void* world) {
   if (w == NULL) return;
   b2DestroyWorld(w->id);
   free(w->bodies);
-  free(w->angles);
+  free(w->turns);
   free(w);
 }
 
@@ -74,9 +83,9 @@ static int v3_add_body(void* world, const bench_body_def* def) {
     b2BodyId* bodies = realloc(w->bodies, sizeof *bodies * (size_t)capacity);
     if (bodies == NULL) return -1;
     w->bodies = bodies;
-    double* angles = realloc(w->angles, sizeof *angles * (size_t)capacity);
-    if (angles == NULL) return -1;
-    w->angles = angles;
+    v3_turns* turns = realloc(w->turns, sizeof *turns * (size_t)capacity);
+    if (turns == NULL) return -1;
+    w->turns = turns;
     w->capacity = capacity;
   }
   b2BodyDef bd = b2DefaultBodyDef();
@@ -94,7 +103,8 @@ static int v3_add_body(void* world, const bench_body_def* def) {
   b2BodyId b = b2CreateBody(w->id, &bd);
   if (!b2Body_IsValid(b)) return -1;
   w->bodies[w->count] = b;
-  w->angles[w->count] = rot_angle(bd.rotation);
+  w->turns[w->count].q = bd.rotation;
+  w->turns[w->count].turns = (int)floor((def->angle - rot_angle(bd.rotation)) / (2.0 * V3_PI) + 0.5);
   return w->count++;
 }
 
@@ -148,9 +158,13 @@ static int v3_step(void* world) {
   b2BodyEvents events = b2World_GetBodyEvents(w->id);
   for (int i = 0; i < events.moveCount; ++i) {
     const b2BodyMoveEvent* e = &events.moveEvents[i];
-    uintptr_t k = (uintptr_t)e->userData;
-    double turn = rot_angle(e->transform.q) - w->angles[k];
-    w->angles[k] += turn - 2.0 * V3_PI * floor(turn / (2.0 * V3_PI) + 0.5);
+    v3_turns* t = &w->turns[(uintptr_t)e->userData];
+    b2Rot a = t->q, b = e->transform.q;
+    /* the sine changed sign: the short arc from a to b crossed the x axis,
+     * at pi (where the angle wraps) when its chord crosses at x < 0, that is
+     * when sin(b - a) and b.s - a.s differ in sign */
+    if ((a.s < 0.0f) != (b.s < 0.0f) && (a.c * b.s - b.c * a.s) * (b.s - a.s) < 0.0f) t->turns += b.s < a.s ? 1 : -1;
+    t->q = b;
   }
   return 0;
 }
@@ -162,7 +176,7 @@ static void v3_get_state(void* world, int body, bench_state* out) {
   b2Vec2 v = b2Body_GetLinearVelocity(b);
   out->x = p.x;
   out->y = p.y;
-  out->angle = w->angles[body];
+  out->angle = rot_angle(b2Body_GetRotation(b)) + 2.0 * V3_PI * w->turns[body].turns;
   out->cx = c.x;
   out->cy = c.y;
   out->vx = v.x;
