@@ -1,6 +1,7 @@
 /* Accuracy benchmark: run time against error, tumble and Box2D 2.4.1 side by
- * side (issue 6). Every scene is written once against tools/bench/engine.h
- * and built with the same parameters in both engines; each error metric is
+ * side (issue 6), and Box2D v3 too in make bench-v3's build (issue 21). Every
+ * scene is written once against tools/bench/engine.h and built with the same
+ * parameters in each engine; each error metric is
  * taken against a closed form (or, for far_pyramid, against the same engine's
  * run at the origin), defined at each scene below and in results/scenes.tsv.
  *
@@ -14,7 +15,7 @@
  * forces); Box2D at velocity/position iterations 4/2, 8/3, 16/6, 32/12 and the
  * same time steps (pyramid_100, 5,050 boxes, stops at 120 Hz so that
  * `make bench` fits in 15 minutes). Defaults: tumble 60 Hz, 4 substeps,
- * semi-implicit Euler; Box2D 60 Hz, 8/3. Sleep is off in every scene (they
+ * midpoint (its library default); Box2D 60 Hz, 8/3. Sleep is off in every scene (they
  * measure the solver).
  *
  * Cost: only the engine's step call is timed (CLOCK_MONOTONIC). A setting is
@@ -28,7 +29,13 @@
  * --quick: fewer settings (tumble 1, 4, 8 substeps at 60 Hz and 4 substeps at
  * 30 and 120 Hz; Box2D 4/2, 8/3, 16/6 at 60 Hz and 8/3 at 30 and 120 Hz), one
  * run, shorter and smaller large scenes. Exit status 1 when a step fails or a
- * metric is not finite (NaN), so CI catches a broken engine or bench. */
+ * metric is not finite (NaN), so CI catches a broken engine or bench.
+ *
+ * Built with -DBENCH_WITH_V3 (build/bench/bench_accuracy_v3, make bench-v3
+ * only, linked with tools/bench_engine_v3.c and a v3 libbox2d.a), the sweep
+ * also runs Box2D v3 ("box2d_v3") at substeps 1, 2, 4, 8 and the same time
+ * steps; its default is 60 Hz, 4 substeps; --quick keeps the substeps and
+ * rates tumble keeps. Without it nothing of v3 is compiled or run. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdint.h>
@@ -642,7 +649,11 @@ static void run_elastic_balls(sim* s, double m[METRICS]) {
 /* mass_spring: a 1 kg disc pulled to the origin by F = -k x with
  * k = 4 pi^2 N/m (period 1 s), released at x = 1 m, no gravity, nothing to
  * touch. In tumble the spring is a force field, so each integrator applies;
- * Box2D applies the force before each step. Closed form x = cos(w t),
+ * Box2D applies the force before each step. Box2D v3 has no hook inside its
+ * n substeps, so the force is held over them: a step then moves
+ * x += dt v + (n + 1) / (2 n) dt^2 a, and the energy grows by
+ * 1 + (n - 1) / (2 n) (w dt)^2 per step (x11.7 in 10 s at 60 Hz, n = 4;
+ * n = 1 is 2.4.1's semi-implicit Euler). Closed form x = cos(w t),
  * w = sqrt(k / m). Error after 10 s: |x - x_exact| (m, the amplitude is 1 m);
  * energy error |E - E0| / E0 with E = m v^2 / 2 + k x^2 / 2. */
 static void run_mass_spring(sim* s, double m[METRICS]) {
@@ -846,6 +857,11 @@ typedef struct engine_setting {
 
 static const char* k_integrators[3] = {"euler", "midpoint", "rk4"};
 
+/* --quick's substep settings (tumble's, and v3's in bench_accuracy_v3) */
+static bool quick_substeps(int hz, int substeps) {
+  return (hz == 60 && (substeps == 1 || substeps == 4 || substeps == 8)) || ((hz == 30 || hz == 120) && substeps == 4);
+}
+
 static int make_settings(engine_setting* out, bool integrators, int max_hz) {
   static const int hz_full[4] = {30, 60, 120, 240};
   static const int substeps_full[5] = {1, 2, 4, 8, 16};
@@ -857,9 +873,7 @@ static int make_settings(engine_setting* out, bool integrators, int max_hz) {
     for (int k = 0; k < kinds; ++k) {
       for (int q = 0; q < 5; ++q) {
         int ss = substeps_full[q];
-        if (g_quick && !((hz_full[h] == 60 && (ss == 1 || ss == 4 || ss == 8)) ||
-                         ((hz_full[h] == 30 || hz_full[h] == 120) && ss == 4)))
-          continue;
+        if (g_quick && !quick_substeps(hz_full[h], ss)) continue;
         /* integrator index = tb_integrator; scenes without the sweep use
          * tumble's default, midpoint (1), which is also the default row */
         int integrator = integrators ? k : 1;
@@ -873,6 +887,15 @@ static int make_settings(engine_setting* out, bool integrators, int max_hz) {
       engine_setting es = {&bench_box2d_engine, {dt, 0, 0, iters[q][0], iters[q][1]}, hz_full[h] == 60 && q == 1};
       out[n++] = es;
     }
+#ifdef BENCH_WITH_V3
+    /* v3 at substeps 1, 2, 4, 8; its default is 4 at 60 Hz */
+    for (int q = 0; q < 4; ++q) {
+      int ss = substeps_full[q];
+      if (g_quick && !quick_substeps(hz_full[h], ss)) continue;
+      engine_setting es = {&bench_box2d_v3_engine, {dt, ss, 0, 0, 0}, hz_full[h] == 60 && ss == 4};
+      out[n++] = es;
+    }
+#endif
   }
   return n;
 }
@@ -915,6 +938,10 @@ static bool run_setting(const scene* sc, const engine_setting* es, int runs, FIL
   char label[64];
   if (tumble) {
     snprintf(label, sizeof label, "tumble %3d Hz %2d sub %s", hz, es->s.substeps, integrator);
+#ifdef BENCH_WITH_V3
+  } else if (es->e == &bench_box2d_v3_engine) {
+    snprintf(label, sizeof label, "v3     %3d Hz %2d sub", hz, es->s.substeps);
+#endif
   } else {
     snprintf(label, sizeof label, "box2d  %3d Hz %2d/%-2d", hz, es->s.velocity_iterations, es->s.position_iterations);
   }

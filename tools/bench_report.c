@@ -7,7 +7,10 @@
  *   profile.csv  tumble's per-stage profile of the performance scenes
  *   skip.csv     cost of what a scene does not use (tools/bench_skip.c)
  *   machine.txt  where it ran (written by tools/bench_run.sh)
- * Missing optional files leave their section out. Writes REPORT.md, and under
+ * Missing optional files leave their section out. Rows of engine "box2d_v3"
+ * (make bench-v3's bench_accuracy_v3) add Box2D v3 to the headline, the
+ * scene tables and the plots; without them the report is as before. Writes
+ * REPORT.md, and under
  * plots/: one data file per scene and engine (sweep points and their Pareto
  * front) and plots.gp, which gnuplot turns into the PNGs.
  *
@@ -123,6 +126,8 @@ static int default_row(const table* t, const char* scene, const char* engine) {
 static void setting_label(const table* t, int r, char* out, size_t size) {
   if (strcmp(get(t, r, "engine"), "tumble") == 0) {
     snprintf(out, size, "%s Hz, %s substeps, %s", get(t, r, "hz"), get(t, r, "substeps"), get(t, r, "integrator"));
+  } else if (strcmp(get(t, r, "engine"), "box2d_v3") == 0) {
+    snprintf(out, size, "%s Hz, %s substeps", get(t, r, "hz"), get(t, r, "substeps"));
   } else {
     snprintf(out, size, "%s Hz, %s/%s iterations", get(t, r, "hz"), get(t, r, "velocity_iterations"),
              get(t, r, "position_iterations"));
@@ -138,6 +143,15 @@ static void fmt(double v, char* out, size_t size) {
   }
 }
 
+/* a cell of a scene's defaults table: "%.4f" ms, or an error as fmt writes it */
+static void value_cell(const table* t, int r, const char* col, char* out, size_t size) {
+  if (strcmp(col, "ms_per_60hz_frame") == 0) {
+    snprintf(out, size, "%.4f", num(t, r, col));
+  } else {
+    fmt(num(t, r, col), out, size);
+  }
+}
+
 static void ratio(double a, double b, char* out, size_t size) {
   if (b == 0.0 && a == 0.0) {
     snprintf(out, size, "1 (both 0)");
@@ -146,6 +160,51 @@ static void ratio(double a, double b, char* out, size_t size) {
   } else {
     snprintf(out, size, "%.3g", a / b);
   }
+}
+
+/* tumble's default row against another engine's default row in one scene */
+typedef struct comparison {
+  char tumble[32], other[32], error_ratio[32], time_ratio[32];
+  bool err_worse, slower;
+  const char* verdict;
+} comparison;
+
+static comparison compare(const table* t, int rt, int ro) {
+  comparison c;
+  double et = num(t, rt, "error"), eo = num(t, ro, "error");
+  double ct = num(t, rt, "ms_per_60hz_frame"), co = num(t, ro, "ms_per_60hz_frame");
+  fmt(et, c.tumble, sizeof c.tumble);
+  fmt(eo, c.other, sizeof c.other);
+  ratio(et, eo, c.error_ratio, sizeof c.error_ratio);
+  ratio(ct, co, c.time_ratio, sizeof c.time_ratio);
+  /* a tie: errors within 1% or both at float round-off (1e-6); times within
+   * 10%, the run-to-run spread of microsecond scenes on a shared machine */
+  c.err_worse = et > eo * 1.01 && et > 1e-6;
+  c.slower = ct > co * 1.10;
+  c.verdict = c.err_worse && c.slower ? "**tumble worse: less accurate and slower**"
+              : c.err_worse           ? "**tumble less accurate**"
+              : c.slower              ? "tumble as accurate or better, but slower"
+                                      : "tumble as accurate or better, not slower";
+  return c;
+}
+
+/* the scenes where tumble's default is worse than another engine's */
+typedef struct worse_list {
+  int count;
+  char line[64][256];
+} worse_list;
+
+static void note_worse(worse_list* w, const char* scene, const char* metric, const char* other, const comparison* c) {
+  if (!(c->err_worse || c->slower) || w->count >= 64) return;
+  snprintf(w->line[w->count++], sizeof w->line[0], "%s (%s): tumble %s, %s %s (error ratio %s); time ratio %s%s", scene,
+           metric, c->tumble, other, c->other, c->error_ratio, c->time_ratio, c->err_worse ? "" : " (only slower)");
+}
+
+static void print_worse(FILE* md, const worse_list* w, const char* other) {
+  if (w->count == 0) return;
+  fprintf(md, "Where tumble's default is worse than %s's default:\n\n", other);
+  for (int i = 0; i < w->count; ++i) fprintf(md, "- %s\n", w->line[i]);
+  fprintf(md, "\n");
 }
 
 static void write_sweep_data(const char* dir, const char* scene, const char* engine, point* p, int n) {
@@ -184,7 +243,11 @@ int main(int argc, char** argv) {
   bool have_profile = read_table(dir, "profile.csv", ',', &profile) && profile.rows > 0;
   bool have_skip = read_table(dir, "skip.csv", ',', &skip) && skip.rows > 0;
   int broken = 0;
-  for (int r = 0; r < acc.rows; ++r) broken += atoi(get(&acc, r, "ok")) != 1;
+  bool have_v3 = false;
+  for (int r = 0; r < acc.rows; ++r) {
+    broken += atoi(get(&acc, r, "ok")) != 1;
+    have_v3 = have_v3 || strcmp(get(&acc, r, "engine"), "box2d_v3") == 0;
+  }
 
   /* scenes in file order */
   const char* scenes[256];
@@ -211,10 +274,17 @@ int main(int argc, char** argv) {
           "set logscale xy\nset grid\nset key top right\nset format y '10^{%%L}'\n"
           "set xlabel 'ms per 1/60 s of simulated time (log)'\n");
 
-  fprintf(md, "# tumble benchmark: run time against error, beside Box2D 2.4.1\n\n");
-  fprintf(md,
-          "Regenerate everything with `make bench` (about 15 minutes); `make bench-quick` runs a smaller sweep "
-          "in about a minute. ");
+  fprintf(md, "# tumble benchmark: run time against error, beside Box2D 2.4.1%s\n\n", have_v3 ? " and Box2D v3" : "");
+  if (have_v3) {
+    fprintf(md,
+            "Regenerate with `make bench-v3 BOX2D_V3_DIR=<a Box2D v3 tree>`: the accuracy scenes of `make bench` with "
+            "Box2D v3 added (`BENCH_V3_ACCURACY=only` leaves out v3's speed scenes, `BENCH_V3_QUICK=1` runs the "
+            "quick sweep). ");
+  } else {
+    fprintf(md,
+            "Regenerate everything with `make bench` (about 15 minutes); `make bench-quick` runs a smaller sweep "
+            "in about a minute. ");
+  }
   char line[512];
   snprintf(path, sizeof path, "%s/machine.txt", dir);
   FILE* mf = fopen(path, "r");
@@ -238,53 +308,69 @@ int main(int argc, char** argv) {
           "8 velocity / 3 position iterations. Sweeps: tumble substeps 1, 2, 4, 8, 16 x time steps 1/30 ... 1/240 "
           "(x integrators euler, midpoint, rk4 where only gravity and forces move the bodies); Box2D iterations "
           "4/2, 8/3, 16/6, 32/12 x the same time steps (pyramid_100 up to 120 Hz only). All rows are in "
-          "`bench.csv`; errors of exactly 0 are drawn at 1e-12 on the log axes.%s\n\n",
+          "`bench.csv`; errors of exactly 0 are drawn at 1e-12 on the log axes.%s%s\n\n",
+          have_v3 ? " Box2D v3 (rows `box2d_v3`, built only by `make bench-v3`) runs the same scenes through its C API "
+                    "(`tools/bench_engine_v3.c`) with its own defaults (contact and joint softness, continuous "
+                    "collision); its polygons have no skin. Its default is 60 Hz, 4 substeps, and its sweep substeps "
+                    "1, 2, 4, 8 x the same time steps. As in 2.4.1, mass_spring's spring force is applied once "
+                    "before each step and held over v3's substeps."
+                  : "",
           broken > 0 ? " **Some rows are marked broken (ok = 0): a step failed or a metric was NaN.**" : "");
 
   /* headline table */
-  fprintf(md, "## Headline: tumble's default against Box2D's default\n\n");
-  fprintf(md,
-          "Error ratio < 1: tumble is more accurate; time ratio < 1: tumble is faster. Ties: errors within 1%% (or "
-          "both below 1e-6, float round-off), times within 10%% (the spread of scenes that step in microseconds).\n\n");
-  fprintf(md, "| scene | error | tumble | Box2D | error ratio | time ratio | verdict |\n");
-  fprintf(md, "| --- | --- | ---: | ---: | ---: | ---: | --- |\n");
-  int worse_count = 0;
-  char worse[64][256];
+  if (have_v3) {
+    fprintf(md, "## Headline: tumble's default against Box2D 2.4.1's and Box2D v3's defaults\n\n");
+  } else {
+    fprintf(md, "## Headline: tumble's default against Box2D's default\n\n");
+  }
+  fprintf(
+      md,
+      "Error ratio < 1: tumble is more accurate; time ratio < 1: tumble is faster. Ties: errors within 1%% (or "
+      "both below 1e-6, float round-off), times within 10%% (the spread of scenes that step in microseconds).%s\n\n",
+      have_v3 ? " Box2D is 2.4.1, v3 is Box2D v3; ms is ms per 1/60 s of simulated time (at the defaults' 60 Hz, "
+                "ms per step)."
+              : "");
+  if (have_v3) {
+    fprintf(
+        md,
+        "| scene | error | tumble | Box2D | v3 | tumble ms | Box2D ms | v3 ms | error ratio | time ratio | verdict | "
+        "error ratio to v3 | time ratio to v3 | verdict against v3 |\n");
+    fprintf(md, "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: | --- |\n");
+  } else {
+    fprintf(md, "| scene | error | tumble | Box2D | error ratio | time ratio | verdict |\n");
+    fprintf(md, "| --- | --- | ---: | ---: | ---: | ---: | --- |\n");
+  }
+  static worse_list worse_b2, worse_v3;
   for (int k = 0; k < scene_count; ++k) {
     const char* s = scenes[k];
     int rt = default_row(&acc, s, "tumble"), rb = default_row(&acc, s, "box2d");
     if (rt < 0 || rb < 0) continue;
-    double et = num(&acc, rt, "error"), eb = num(&acc, rb, "error");
-    double ct = num(&acc, rt, "ms_per_60hz_frame"), cb = num(&acc, rb, "ms_per_60hz_frame");
     const char* metric = "error";
     for (int m = 0; have_meta && m < meta.rows; ++m) {
       if (strcmp(get(&meta, m, "scene"), s) == 0) metric = get(&meta, m, "error");
     }
-    char a[32], b[32], er[32], tr[32];
-    fmt(et, a, sizeof a);
-    fmt(eb, b, sizeof b);
-    ratio(et, eb, er, sizeof er);
-    ratio(ct, cb, tr, sizeof tr);
-    /* a tie: errors within 1% or both at float round-off (1e-6); times within
-     * 10%, the run-to-run spread of microsecond scenes on a shared machine */
-    bool err_worse = et > eb * 1.01 && et > 1e-6;
-    bool slower = ct > cb * 1.10;
-    const char* verdict = err_worse && slower ? "**tumble worse: less accurate and slower**"
-                          : err_worse         ? "**tumble less accurate**"
-                          : slower            ? "tumble as accurate or better, but slower"
-                                              : "tumble as accurate or better, not slower";
-    fprintf(md, "| [%s](#%s) | %s | %s | %s | %s | %s | %s |\n", s, s, metric, a, b, er, tr, verdict);
-    if ((err_worse || slower) && worse_count < 64) {
-      snprintf(worse[worse_count++], sizeof worse[0], "%s (%s): tumble %s, Box2D %s (error ratio %s); time ratio %s%s",
-               s, metric, a, b, er, tr, err_worse ? "" : " (only slower)");
+    comparison cb = compare(&acc, rt, rb);
+    note_worse(&worse_b2, s, metric, "Box2D", &cb);
+    if (!have_v3) {
+      fprintf(md, "| [%s](#%s) | %s | %s | %s | %s | %s | %s |\n", s, s, metric, cb.tumble, cb.other, cb.error_ratio,
+              cb.time_ratio, cb.verdict);
+      continue;
     }
+    int rv = default_row(&acc, s, "box2d_v3");
+    comparison cv = {"-", "-", "-", "-", false, false, "-"};
+    char v3_ms[32] = "-";
+    if (rv >= 0) {
+      cv = compare(&acc, rt, rv);
+      note_worse(&worse_v3, s, metric, "v3", &cv);
+      snprintf(v3_ms, sizeof v3_ms, "%.4f", num(&acc, rv, "ms_per_60hz_frame"));
+    }
+    fprintf(md, "| [%s](#%s) | %s | %s | %s | %s | %.4f | %.4f | %s | %s | %s | %s | %s | %s | %s |\n", s, s, metric,
+            cb.tumble, cb.other, cv.other, num(&acc, rt, "ms_per_60hz_frame"), num(&acc, rb, "ms_per_60hz_frame"),
+            v3_ms, cb.error_ratio, cb.time_ratio, cb.verdict, cv.error_ratio, cv.time_ratio, cv.verdict);
   }
   fprintf(md, "\n");
-  if (worse_count > 0) {
-    fprintf(md, "Where tumble's default is worse than Box2D's default:\n\n");
-    for (int i = 0; i < worse_count; ++i) fprintf(md, "- %s\n", worse[i]);
-    fprintf(md, "\n");
-  }
+  print_worse(md, &worse_b2, "Box2D");
+  print_worse(md, &worse_v3, "Box2D v3");
 
   /* targets */
   fprintf(md, "## Targets of issue 6\n\n");
@@ -322,34 +408,49 @@ int main(int argc, char** argv) {
     fprintf(md, "### %s\n\n", s);
     if (mrow >= 0) fprintf(md, "%s.\n\n", get(&meta, mrow, "definition"));
     int rt = default_row(&acc, s, "tumble"), rb = default_row(&acc, s, "box2d");
+    int rv = have_v3 ? default_row(&acc, s, "box2d_v3") : -1;
     if (rt >= 0 && rb >= 0) {
-      fprintf(md, "| at the defaults | tumble (60 Hz, 4 substeps) | Box2D (60 Hz, 8/3) | ratio |\n");
-      fprintf(md, "| --- | ---: | ---: | ---: |\n");
-      const char* cols[3] = {"error", "metric2", "metric3"};
-      for (int c = 0; c < 3; ++c) {
-        const char* name = mrow >= 0 ? get(&meta, mrow, cols[c]) : cols[c];
+      if (have_v3) {
+        fprintf(md,
+                "| at the defaults | tumble (60 Hz, 4 substeps) | Box2D (60 Hz, 8/3) | ratio | "
+                "Box2D v3 (60 Hz, 4 substeps) | ratio to v3 |\n");
+        fprintf(md, "| --- | ---: | ---: | ---: | ---: | ---: |\n");
+      } else {
+        fprintf(md, "| at the defaults | tumble (60 Hz, 4 substeps) | Box2D (60 Hz, 8/3) | ratio |\n");
+        fprintf(md, "| --- | ---: | ---: | ---: |\n");
+      }
+      const char* cols[4] = {"error", "metric2", "metric3", "ms_per_60hz_frame"};
+      for (int c = 0; c < 4; ++c) {
+        const char* name = c == 3 ? "ms per 1/60 s" : mrow >= 0 ? get(&meta, mrow, cols[c]) : cols[c];
         if (name[0] == '\0') continue;
         char a[32], b[32], q[32];
-        fmt(num(&acc, rt, cols[c]), a, sizeof a);
-        fmt(num(&acc, rb, cols[c]), b, sizeof b);
+        value_cell(&acc, rt, cols[c], a, sizeof a);
+        value_cell(&acc, rb, cols[c], b, sizeof b);
         ratio(num(&acc, rt, cols[c]), num(&acc, rb, cols[c]), q, sizeof q);
-        fprintf(md, "| %s | %s | %s | %s |\n", name, a, b, q);
+        fprintf(md, "| %s | %s | %s | %s |", name, a, b, q);
+        if (have_v3) {
+          char v[32] = "-", qv[32] = "-";
+          if (rv >= 0) {
+            value_cell(&acc, rv, cols[c], v, sizeof v);
+            ratio(num(&acc, rt, cols[c]), num(&acc, rv, cols[c]), qv, sizeof qv);
+          }
+          fprintf(md, " %s | %s |", v, qv);
+        }
+        fprintf(md, c == 3 ? "\n\n" : "\n");
       }
-      char a[32], b[32], q[32];
-      snprintf(a, sizeof a, "%.4f", num(&acc, rt, "ms_per_60hz_frame"));
-      snprintf(b, sizeof b, "%.4f", num(&acc, rb, "ms_per_60hz_frame"));
-      ratio(num(&acc, rt, "ms_per_60hz_frame"), num(&acc, rb, "ms_per_60hz_frame"), q, sizeof q);
-      fprintf(md, "| ms per 1/60 s | %s | %s | %s |\n\n", a, b, q);
     }
     /* the Pareto fronts, as data for the plot and as a line in the report */
     static point pts[512];
-    const char* engines[2] = {"tumble", "box2d"};
-    for (int e = 0; e < 2; ++e) {
+    const char* engines[3] = {"tumble", "box2d", "box2d_v3"};
+    const char* engine_names[3] = {"tumble", "Box2D", "Box2D v3"};
+    bool v3_plotted = false;
+    for (int e = 0; e < (have_v3 ? 3 : 2); ++e) {
       int n = collect(&acc, s, engines[e], pts);
       if (n == 0) continue;
+      v3_plotted = v3_plotted || e == 2;
       mark_pareto(pts, n);
       write_sweep_data(dir, s, engines[e], pts, n);
-      fprintf(md, "%s's Pareto front (cheapest first): ", e == 0 ? "tumble" : "Box2D");
+      fprintf(md, "%s's Pareto front (cheapest first): ", engine_names[e]);
       bool first = true;
       for (int i = 0; i < n; ++i) {
         if (!pts[i].pareto) continue;
@@ -377,7 +478,22 @@ int main(int argc, char** argv) {
             "     '%s_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' "
             "title 'Box2D Pareto front'",
             s, s, s, s);
-    if (rt >= 0 && rb >= 0) {
+    if (v3_plotted) {
+      fprintf(gp,
+              ", \\\n     '%s_box2d_v3.dat' index 0 using 1:2 with points pt 8 ps 1.2 lc rgb '#2ca02c' "
+              "title 'Box2D v3 sweep', \\\n"
+              "     '%s_box2d_v3.dat' index 1 using 1:2 with linespoints pt 9 ps 1.2 lw 2 lc rgb '#2ca02c' "
+              "title 'Box2D v3 Pareto front'",
+              s, s);
+    }
+    if (rt >= 0 && rb >= 0 && rv >= 0) {
+      fprintf(gp,
+              ", \\\n     '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz; 4 "
+              "substeps / 8-3 / v3 4 substeps)'\n%.6g %.6g\n%.6g %.6g\n%.6g %.6g\ne\n",
+              num(&acc, rt, "ms_per_60hz_frame"), fmax(num(&acc, rt, "error"), ERROR_FLOOR),
+              num(&acc, rb, "ms_per_60hz_frame"), fmax(num(&acc, rb, "error"), ERROR_FLOOR),
+              num(&acc, rv, "ms_per_60hz_frame"), fmax(num(&acc, rv, "error"), ERROR_FLOOR));
+    } else if (rt >= 0 && rb >= 0) {
       fprintf(gp,
               ", \\\n     '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 "
               "substeps / 8-3)'\n%.6g %.6g\n%.6g %.6g\ne\n",

@@ -1,12 +1,13 @@
-/* One small interface over both engines, so that every accuracy scene of
+/* One small interface over the engines, so that every accuracy scene of
  * tools/bench_accuracy.c is written once and built with the same parameters in
- * tumble (tools/bench_engine_tumble.c) and Box2D 2.4.1
- * (tools/bench_engine_b2.cpp). Bodies are numbered 0, 1, ... in creation order.
+ * tumble (tools/bench_engine_tumble.c), Box2D 2.4.1
+ * (tools/bench_engine_b2.cpp) and, in make bench-v3 only, Box2D v3
+ * (tools/bench_engine_v3.c). Bodies are numbered 0, 1, ... in creation order.
  *
  * Box2D's polygons carry a skin of 0.01 m around their core
  * (b2_polygonRadius); `polygon_skin` says how far outside its vertices a
  * polygon's surface is, so that scenes place bodies where they rest in each
- * engine (tumble's is 0). */
+ * engine (tumble's and v3's are 0). */
 #ifndef TUMBLE_BENCH_ENGINE_H
 #define TUMBLE_BENCH_ENGINE_H
 
@@ -19,7 +20,8 @@ extern "C" {
 typedef enum bench_body_type { BENCH_STATIC = 0, BENCH_KINEMATIC = 1, BENCH_DYNAMIC = 2 } bench_body_type;
 
 /* How a world steps: tumble uses substeps and integrator (0 semi-implicit
- * Euler, 1 midpoint, 2 RK4: tb_integrator), Box2D the two iteration counts. */
+ * Euler, 1 midpoint, 2 RK4: tb_integrator), Box2D 2.4.1 the two iteration
+ * counts, Box2D v3 substeps. */
 typedef struct bench_setting {
   double dt;
   int substeps;
@@ -59,7 +61,7 @@ typedef struct bench_state {
 } bench_state;
 
 typedef struct bench_engine {
-  const char* name; /* "tumble" or "box2d" */
+  const char* name; /* "tumble", "box2d" (2.4.1) or "box2d_v3" */
   double polygon_skin;
   void* (*create)(const bench_world_def* def, const bench_setting* setting);
   void (*destroy)(void* world);
@@ -82,6 +84,8 @@ typedef struct bench_engine {
 
 extern const bench_engine bench_tumble_engine;
 extern const bench_engine bench_box2d_engine;
+/* only in make bench-v3's build (tools/bench_engine_v3.c) */
+extern const bench_engine bench_box2d_v3_engine;
 
 static inline bench_body_def bench_body(bench_body_type type, double x, double y) {
   bench_body_def d = {type, x, y, 0.0, 0.0, 0.0, 0.0, false, true};
