@@ -295,6 +295,59 @@ static void inv_mass_times(const tb_solver_body* s, const float j[3], double out
   out[2] = (double)s->inv_inertia * j[2];
 }
 
+/* ---- block kernels by shape --------------------------------------------------
+ * A child and its parent are a body (3 unknowns) and a joint's rows (1 to 3):
+ * the kernels below take the two sizes as constants (BY_SHAPE) so that the
+ * compiler unrolls their small loops; the operations and their order are
+ * those of the loops with variable bounds, so the results are the same. */
+
+/* Calls kernel(nd, pd, ...) with the sizes nd (child) and pd (parent) as constants. */
+#define BY_SHAPE(nd, pd, kernel, ...)                                       \
+  do {                                                                      \
+    int shape_ = (nd) * 4 + (pd);                                           \
+    switch (shape_) {                                                       \
+      case 3 * 4 + 1: kernel(3, 1, __VA_ARGS__); break;                     \
+      case 3 * 4 + 2: kernel(3, 2, __VA_ARGS__); break;                     \
+      case 3 * 4 + 3: kernel(3, 3, __VA_ARGS__); break;                     \
+      case 1 * 4 + 3: kernel(1, 3, __VA_ARGS__); break;                     \
+      case 2 * 4 + 3: kernel(2, 3, __VA_ARGS__); break;                     \
+      default: kernel(shape_ / 4, shape_ % 4, __VA_ARGS__); break;          \
+    }                                                                       \
+  } while (0)
+
+/* D_p -= H_ip^T D_i^-1 H_ip (D_i already inverted) */
+static inline __attribute__((always_inline)) void eliminate(int nd, int pd, const tb_jt_node* n, tb_jt_node* p) {
+  double dh[3][3] = {{0.0}}; /* D_i^-1 H_ip */
+  for (int r = 0; r < nd; ++r)
+    for (int c = 0; c < pd; ++c)
+      for (int s = 0; s < nd; ++s) dh[r][c] += n->d[r][s] * n->hp[s][c];
+  for (int c = 0; c < pd; ++c)
+    for (int e = 0; e < pd; ++e)
+      for (int r = 0; r < nd; ++r) p->d[c][e] -= n->hp[r][c] * dh[r][e];
+}
+
+/* forward: y_p -= H_ip^T D_i^-1 y_i */
+static inline __attribute__((always_inline)) void forward(int nd, int pd, const tb_jt_node* n, tb_jt_node* p) {
+  double dy[3] = {0.0};
+  for (int r = 0; r < nd; ++r)
+    for (int s = 0; s < nd; ++s) dy[r] += n->d[r][s] * n->y[s];
+  for (int c = 0; c < pd; ++c)
+    for (int r = 0; r < nd; ++r) p->y[c] -= n->hp[r][c] * dy[r];
+}
+
+/* back: y_i = D_i^-1 (y_i - H_ip x_p) */
+static inline __attribute__((always_inline)) void back(int nd, int pd, tb_jt_node* n, const tb_jt_node* p) {
+  double rhs[3] = {n->y[0], n->y[1], n->y[2]};
+  if (p != NULL) {
+    for (int r = 0; r < nd; ++r)
+      for (int c = 0; c < pd; ++c) rhs[r] -= n->hp[r][c] * p->y[c];
+  }
+  for (int r = 0; r < nd; ++r) {
+    n->y[r] = 0.0;
+    for (int s = 0; s < nd; ++s) n->y[r] += n->d[r][s] * rhs[s];
+  }
+}
+
 /* ---- the solve -------------------------------------------------------------- */
 
 /* A joint's rows at the current positions, its block of D (-G) and G itself. */
@@ -366,13 +419,7 @@ static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
     invert(n->d, n->dof);
     if (n->parent < 0) continue;
     tb_jt_node* p = &t->nodes[n->parent];
-    double dh[3][3] = {{0.0}}; /* D_i^-1 H_ip */
-    for (int r = 0; r < n->dof; ++r)
-      for (int c = 0; c < p->dof; ++c)
-        for (int s = 0; s < n->dof; ++s) dh[r][c] += n->d[r][s] * n->hp[s][c];
-    for (int c = 0; c < p->dof; ++c)
-      for (int e = 0; e < p->dof; ++e)
-        for (int r = 0; r < n->dof; ++r) p->d[c][e] -= n->hp[r][c] * dh[r][e];
+    BY_SHAPE(n->dof, p->dof, eliminate, n, p);
   }
 }
 
@@ -428,24 +475,16 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
     const tb_jt_node* n = &t->nodes[q];
     if (n->parent < 0) continue;
     tb_jt_node* p = &t->nodes[n->parent];
-    double dy[3] = {0.0};
-    for (int r = 0; r < n->dof; ++r)
-      for (int s = 0; s < n->dof; ++s) dy[r] += n->d[r][s] * n->y[s];
-    for (int c = 0; c < p->dof; ++c)
-      for (int r = 0; r < n->dof; ++r) p->y[c] -= n->hp[r][c] * dy[r];
+    BY_SHAPE(n->dof, p->dof, forward, n, p);
   }
   /* back, parents first: y becomes the solution */
   for (int q = from; q < to; ++q) {
     tb_jt_node* n = &t->nodes[q];
-    double rhs[3] = {n->y[0], n->y[1], n->y[2]};
     if (n->parent >= 0) {
       const tb_jt_node* p = &t->nodes[n->parent];
-      for (int r = 0; r < n->dof; ++r)
-        for (int c = 0; c < p->dof; ++c) rhs[r] -= n->hp[r][c] * p->y[c];
-    }
-    for (int r = 0; r < n->dof; ++r) {
-      n->y[r] = 0.0;
-      for (int s = 0; s < n->dof; ++s) n->y[r] += n->d[r][s] * rhs[s];
+      BY_SHAPE(n->dof, p->dof, back, n, p);
+    } else {
+      BY_SHAPE(n->dof, 3, back, n, NULL);
     }
   }
   /* the velocity changes of the bodies and the impulses of the rows */
