@@ -73,6 +73,7 @@ typedef struct tb_jt_node {
   int first;       /* body: its first edge in tree->edges */
   int count;       /* body: its edge count */
   int a, b;        /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
+  int sa, sb;      /* joint: the solver bodies of A and B (the passes read them without the joint) */
   double d[3][3];  /* D, then D^-1 */
   double hp[3][3]; /* H_{i,parent}: dof x the parent's dof */
   double gk[3][3]; /* joint: the compliance G = g K_c */
@@ -188,6 +189,8 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     int n = add_node(t, tb_joint_rigid_row_count(j), index);
     t->nodes[n].a = is_node_body(ctx, j->solver_a) ? body_node[j->solver_a] : -1;
     t->nodes[n].b = is_node_body(ctx, j->solver_b) ? body_node[j->solver_b] : -1;
+    t->nodes[n].sa = j->solver_a;
+    t->nodes[n].sb = j->solver_b;
     if (t->nodes[n].a >= 0) t->nodes[t->nodes[n].a].count += 1;
     if (t->nodes[n].b >= 0) t->nodes[t->nodes[n].b].count += 1;
   }
@@ -353,8 +356,8 @@ static inline __attribute__((always_inline)) void back(int nd, int pd, tb_jt_nod
 /* A joint's rows at the current positions, its block of D (-G) and G itself. */
 static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double g) {
   tb_joint* j = tb_joint_at(w, n->ref);
-  const tb_solver_body* a = &ctx->states[j->solver_a];
-  const tb_solver_body* b = &ctx->states[j->solver_b];
+  const tb_solver_body* a = &ctx->states[n->sa];
+  const tb_solver_body* b = &ctx->states[n->sb];
   tb_joint_rigid_rows(j, a, b, &n->rows);
   memset(n->d, 0, sizeof n->d);
   int k = n->dof;
@@ -428,9 +431,8 @@ static void node_rhs(tb_world* w, tb_step_context* ctx, int i, double bias) {
   tb_joint_tree* t = &w->joint_tree;
   tb_jt_node* n = &t->nodes[i];
   if (!n->body) {
-    const tb_joint* j = tb_joint_at(w, n->ref);
-    const tb_solver_body* a = &ctx->states[j->solver_a];
-    const tb_solver_body* b = &ctx->states[j->solver_b];
+    const tb_solver_body* a = &ctx->states[n->sa];
+    const tb_solver_body* b = &ctx->states[n->sb];
     for (int r = 0; r < n->dof; ++r) {
       const float* ja = n->rows.ja[r];
       const float* jb = n->rows.jb[r];
