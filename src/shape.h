@@ -24,6 +24,7 @@ typedef struct tb_shape {
   int tree;  /* which tree: the body type when the proxy was made */
   bool in_move_buffer;
   tb_aabb aabb; /* tight, at the body's current transform */
+  float margin; /* how far its fat box reaches beyond aabb (tb_broad_phase_create_proxy) */
   int chain;    /* the chain this segment belongs to, -1 for other shapes */
   void* user_data;
 } tb_shape;

@@ -409,11 +409,17 @@ bool tb_tree_is_proxy(const tb_tree* tree, int32_t proxy) {
 }
 
 int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits, int32_t user_id) {
-  if (tree == NULL || !aabb_ok(aabb)) return TB_TREE_NULL;
+  if (tree == NULL) return TB_TREE_NULL;
+  return tb_tree_create_proxy_with_margin(tree, aabb, tree->margin, category_bits, user_id);
+}
+
+int32_t tb_tree_create_proxy_with_margin(tb_tree* tree, tb_aabb aabb, float margin, uint64_t category_bits,
+                                         int32_t user_id) {
+  if (tree == NULL || !aabb_ok(aabb) || !tb_length_ok(margin) || margin < 0.0f) return TB_TREE_NULL;
   if (!reserve_nodes(tree, 2)) return TB_TREE_NULL;
   int32_t leaf = alloc_node(tree);
   tb_tree_node* n = &tree->nodes[leaf];
-  n->aabb = fat_aabb(aabb, tree->margin, (tb_vec2){0.0f, 0.0f});
+  n->aabb = fat_aabb(aabb, margin, (tb_vec2){0.0f, 0.0f});
   n->category_bits = category_bits;
   n->user_id = user_id;
   n->height = 0;
@@ -436,9 +442,16 @@ bool tb_tree_destroy_proxy(tb_tree* tree, int32_t proxy) {
 }
 
 bool tb_tree_move_proxy(tb_tree* tree, int32_t proxy, tb_aabb aabb, tb_vec2 displacement) {
-  if (!tb_tree_is_proxy(tree, proxy) || !aabb_ok(aabb) || !tb_point_ok(displacement)) return false;
+  if (tree == NULL) return false;
+  return tb_tree_move_proxy_with_margin(tree, proxy, aabb, tree->margin, displacement);
+}
+
+bool tb_tree_move_proxy_with_margin(tb_tree* tree, int32_t proxy, tb_aabb aabb, float margin, tb_vec2 displacement) {
+  if (!tb_tree_is_proxy(tree, proxy) || !aabb_ok(aabb) || !tb_point_ok(displacement) || !tb_length_ok(margin) ||
+      margin < 0.0f)
+    return false;
   tb_tree_node* n = &tree->nodes[proxy];
-  tb_aabb fat = fat_aabb(aabb, tree->margin, displacement);
+  tb_aabb fat = fat_aabb(aabb, margin, displacement);
   if (aabb_contains(n->aabb, aabb) && half_perimeter(n->aabb) <= 2.0f * half_perimeter(fat)) return false;
   /* A proxy still touching its old box lands near its old place: its old
    * sibling bounds the search and a short one does. One that jumped (teleport)

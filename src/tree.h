@@ -83,6 +83,9 @@ int tb_dynamic_tree_live_count(void);
 /* Insert a proxy for a tight AABB (finite, lower <= upper, within TB_MAX_LENGTH).
  * Returns its id, or TB_TREE_NULL on bad input or when out of memory. */
 int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits, int32_t user_id);
+/* The same with the proxy's own fattening margin (>= 0) instead of the tree's. */
+int32_t tb_tree_create_proxy_with_margin(tb_tree* tree, tb_aabb aabb, float margin, uint64_t category_bits,
+                                         int32_t user_id);
 /* False (and nothing done) when proxy is not a live proxy of this tree. */
 /* Room for proxies more, so that as many tb_tree_create_proxy calls cannot run
  * out of memory; false when out of memory. */
@@ -95,6 +98,8 @@ bool tb_tree_destroy_proxy(tb_tree* tree, int32_t proxy);
  * needed). Returns whether it re-inserted; false on bad input (tree unchanged).
  * Never allocates. */
 bool tb_tree_move_proxy(tb_tree* tree, int32_t proxy, tb_aabb aabb, tb_vec2 displacement);
+/* The same with the proxy's own margin (the one it was created with). */
+bool tb_tree_move_proxy_with_margin(tb_tree* tree, int32_t proxy, tb_aabb aabb, float margin, tb_vec2 displacement);
 
 bool tb_tree_is_proxy(const tb_tree* tree, int32_t proxy);
 /* The stored (fat) AABB; a zero box for a bad proxy. */
