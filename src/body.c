@@ -268,12 +268,12 @@ static void add_proxies(tb_world* w, int body) {
     (void)tb_broad_phase_create_proxy(w, s);
 }
 
-void tb_body_update_proxies(tb_world* w, int body, tb_vec2 displacement) {
+void tb_body_update_proxies(tb_world* w, int body, tb_vec2 displacement, bool enlarge) {
   const tb_body* b = tb_body_at(w, body);
   for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
     tb_shape* s = tb_shape_at(w, i);
     s->aabb = tb_shape_geom_aabb(s, b->transform);
-    tb_broad_phase_move_proxy(w, i, displacement);
+    tb_broad_phase_move_proxy(w, i, displacement, enlarge);
   }
 }
 
@@ -372,7 +372,7 @@ tb_result tb_body_set_transform(tb_body_id id, tb_vec2 position, float angle) {
   b->center_residual = (tb_vec2){0.0f, 0.0f};
   b->center0 = b->center;
   b->angle0 = b->angle;
-  tb_body_update_proxies(w, id.index1 - 1, (tb_vec2){0.0f, 0.0f});
+  tb_body_update_proxies(w, id.index1 - 1, (tb_vec2){0.0f, 0.0f}, false);
   wake_touching(w, id.index1 - 1);
   tb_wake_body(w, id.index1 - 1);
   return TB_OK;

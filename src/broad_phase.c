@@ -215,13 +215,18 @@ void tb_broad_phase_destroy_proxy(tb_world* w, int shape_index) {
   s->proxy = -1;
 }
 
-void tb_broad_phase_move_proxy(tb_world* w, int shape_index, tb_vec2 displacement) {
+void tb_broad_phase_move_proxy(tb_world* w, int shape_index, tb_vec2 displacement, bool enlarge) {
   tb_shape* s = tb_shape_at(w, shape_index);
   if (s->proxy < 0) return;
-  if (tb_tree_move_proxy_with_margin(&w->broad_phase.trees[s->tree], s->proxy, s->aabb, s->margin, displacement)) {
-    /* out of memory here only delays pair finding to the proxy's next move */
-    (void)queue_move(w, shape_index);
-  }
+  tb_tree* tree = &w->broad_phase.trees[s->tree];
+  bool moved = enlarge ? tb_tree_enlarge_proxy(tree, s->proxy, s->aabb, s->margin, displacement)
+                       : tb_tree_move_proxy_with_margin(tree, s->proxy, s->aabb, s->margin, displacement);
+  /* out of memory here only delays pair finding to the proxy's next move */
+  if (moved) (void)queue_move(w, shape_index);
+}
+
+void tb_broad_phase_rebuild(tb_world* w) {
+  for (int t = 0; t < 3; ++t) tb_tree_rebuild_enlarged(&w->broad_phase.trees[t]);
 }
 
 /* ---- pair finding -------------------------------------------------------- */

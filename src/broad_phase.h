@@ -30,10 +30,14 @@ void tb_broad_phase_free(tb_broad_phase* bp);
 size_t tb_broad_phase_tree_bytes(const tb_broad_phase* bp);
 size_t tb_broad_phase_pair_bytes(const tb_broad_phase* bp);
 /* Proxies follow their shapes: create (and queue for pair finding), destroy,
- * and move (queued again only when re-inserted). false when out of memory. */
+ * and move (queued again only when given a new fat box). false when out of
+ * memory. A move with enlarge keeps the proxy's place in its tree until
+ * tb_broad_phase_rebuild (tb_tree_enlarge_proxy). */
 bool tb_broad_phase_create_proxy(struct tb_world* w, int shape);
 void tb_broad_phase_destroy_proxy(struct tb_world* w, int shape);
-void tb_broad_phase_move_proxy(struct tb_world* w, int shape, tb_vec2 displacement);
+void tb_broad_phase_move_proxy(struct tb_world* w, int shape, tb_vec2 displacement, bool enlarge);
+/* Rebuilds the parts of the trees that moves with enlarge marked. */
+void tb_broad_phase_rebuild(struct tb_world* w);
 /* Room for proxies more in one tree and in the move buffer, so that the
  * inserts (and queueing) that follow cannot fail; false when out of memory. */
 bool tb_broad_phase_reserve(struct tb_world* w, tb_body_type tree, int proxies);

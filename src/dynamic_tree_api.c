@@ -119,9 +119,7 @@ tb_result tb_dynamic_tree_move_proxy(tb_dynamic_tree* t, int32_t proxy, tb_aabb 
 
 tb_result tb_dynamic_tree_rebuild(tb_dynamic_tree* t) {
   if (check_change(t, __func__) != TB_OK) return tb_last_result();
-  if (tb_tree_rebuild(&t->tree) != TB_OK)
-    return tb_fail(NULL, TB_ERR_OUT_OF_MEMORY, "%s: no memory for the rebuild (the tree is unchanged)", __func__);
-  return TB_OK;
+  return tb_tree_rebuild(&t->tree); /* never allocates: its work space grew with the nodes */
 }
 
 /* ---- queries ---------------------------------------------------------------- */

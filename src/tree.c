@@ -82,6 +82,13 @@ static bool reserve_nodes(tb_tree* t, int32_t extra) {
   int64_t cap = t->capacity < 16 ? 16 : t->capacity;
   while (cap - t->node_count < extra) cap *= 2;
   if (cap > INT32_MAX) return false;
+  /* the rebuild's work space first, so that it always covers the nodes */
+  if (t->scratch_capacity < cap) {
+    int32_t* scratch = tb_mem_grow(t->scratch, (size_t)t->scratch_capacity * sizeof *scratch, (size_t)cap * sizeof *scratch);
+    if (scratch == NULL) return false;
+    t->scratch = scratch;
+    t->scratch_capacity = (int32_t)cap;
+  }
   tb_tree_node* nodes = tb_mem_grow(t->nodes, (size_t)t->capacity * sizeof *nodes, (size_t)cap * sizeof *nodes);
   if (nodes == NULL) return false;
   int32_t old = t->capacity, new_cap = (int32_t)cap;
@@ -399,7 +406,8 @@ tb_result tb_tree_create(tb_tree* tree, float margin) {
 
 void tb_tree_destroy(tb_tree* tree) {
   if (tree == NULL) return;
-  tb_mem_free(tree->nodes, tb_tree_bytes(tree));
+  tb_mem_free(tree->nodes, (size_t)tree->capacity * sizeof *tree->nodes);
+  tb_mem_free(tree->scratch, (size_t)tree->scratch_capacity * sizeof *tree->scratch);
   float margin = tree->margin;
   *tree = (tb_tree){.nodes = NULL, .free_list = TB_TREE_NULL, .root = TB_TREE_NULL, .margin = margin};
 }
@@ -416,6 +424,7 @@ int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits
 int32_t tb_tree_create_proxy_with_margin(tb_tree* tree, tb_aabb aabb, float margin, uint64_t category_bits,
                                          int32_t user_id) {
   if (tree == NULL || !aabb_ok(aabb) || !tb_length_ok(margin) || margin < 0.0f) return TB_TREE_NULL;
+  tb_tree_rebuild_enlarged(tree); /* insertions and rotations need exact boxes */
   if (!reserve_nodes(tree, 2)) return TB_TREE_NULL;
   int32_t leaf = alloc_node(tree);
   tb_tree_node* n = &tree->nodes[leaf];
@@ -435,6 +444,7 @@ bool tb_tree_reserve(tb_tree* tree, int32_t proxies) {
 
 bool tb_tree_destroy_proxy(tb_tree* tree, int32_t proxy) {
   if (!tb_tree_is_proxy(tree, proxy)) return false;
+  tb_tree_rebuild_enlarged(tree);
   remove_leaf(tree, proxy);
   free_node(tree, proxy);
   tree->proxy_count -= 1;
@@ -453,6 +463,7 @@ bool tb_tree_move_proxy_with_margin(tb_tree* tree, int32_t proxy, tb_aabb aabb, 
   tb_tree_node* n = &tree->nodes[proxy];
   tb_aabb fat = fat_aabb(aabb, margin, displacement);
   if (aabb_contains(n->aabb, aabb) && half_perimeter(n->aabb) <= 2.0f * half_perimeter(fat)) return false;
+  tb_tree_rebuild_enlarged(tree);
   /* A proxy still touching its old box lands near its old place: its old
    * sibling bounds the search and a short one does. One that jumped (teleport)
    * is searched for like a new one. */
@@ -468,6 +479,27 @@ bool tb_tree_move_proxy_with_margin(tb_tree* tree, int32_t proxy, tb_aabb aabb, 
   remove_leaf(tree, proxy);
   tree->nodes[proxy].aabb = fat;
   insert_leaf(tree, proxy, budget, hint);
+  return true;
+}
+
+bool tb_tree_enlarge_proxy(tb_tree* tree, int32_t proxy, tb_aabb aabb, float margin, tb_vec2 displacement) {
+  if (!tb_tree_is_proxy(tree, proxy) || !aabb_ok(aabb) || !tb_point_ok(displacement) || !tb_length_ok(margin) ||
+      margin < 0.0f)
+    return false;
+  tb_tree_node* n = tree->nodes;
+  tb_aabb fat = fat_aabb(aabb, margin, displacement);
+  if (aabb_contains(n[proxy].aabb, aabb) && half_perimeter(n[proxy].aabb) <= 2.0f * half_perimeter(fat)) return false;
+  n[proxy].aabb = fat;
+  /* Every ancestor is marked (a shrunk box leaves them larger than their
+   * children, to be refitted). Above an ancestor already marked and not
+   * grown, all are marked and contain the box. */
+  for (int32_t i = n[proxy].parent; i != TB_TREE_NULL; i = n[i].parent) {
+    bool grows = !aabb_contains(n[i].aabb, fat);
+    if (!grows && n[i].enlarged) break;
+    if (grows) n[i].aabb = aabb_union(n[i].aabb, fat);
+    n[i].enlarged = 1;
+    tree->enlarged = true;
+  }
   return true;
 }
 
@@ -750,8 +782,10 @@ bool tb_tree_validate(const tb_tree* tree) {
            n[c2].parent == i && n[c1].height >= 0 && n[c2].height >= 0 &&
            a->height == 1 + max_i(n[c1].height, n[c2].height) &&
            a->category_bits == (n[c1].category_bits | n[c2].category_bits) &&
-           aabb_equal(a->aabb, aabb_union(n[c1].aabb, n[c2].aabb)) && aabb_contains(a->aabb, n[c1].aabb) &&
-           aabb_contains(a->aabb, n[c2].aabb);
+           (a->enlarged || aabb_equal(a->aabb, aabb_union(n[c1].aabb, n[c2].aabb))) &&
+           aabb_contains(a->aabb, n[c1].aabb) && aabb_contains(a->aabb, n[c2].aabb);
+      /* a marked node's ancestors are marked (tb_tree_enlarge_proxy stops there) */
+      if (ok && a->enlarged) ok = tree->enlarged && (a->parent == TB_TREE_NULL || n[a->parent].enlarged);
       if (ok) ok = stack_push(&stack, c1) && stack_push(&stack, c2);
     }
   }
@@ -837,21 +871,13 @@ static int32_t split_leaves(const tb_tree_node* n, int32_t* leaves, int32_t begi
   return i;
 }
 
-tb_result tb_tree_rebuild(tb_tree* tree) {
-  if (tree == NULL) return TB_ERR_NULL_ARGUMENT;
-  int32_t count = tree->proxy_count;
-  if (count < 3) return TB_OK;
-  int32_t* leaves = tb_mem_alloc((size_t)(2 * count) * sizeof *leaves);
-  if (leaves == NULL) return TB_ERR_OUT_OF_MEMORY;
-  int32_t* order = leaves + count; /* internal nodes in creation order */
+/* Joins units[0, count) (leaves, or subtrees kept whole) under count - 1
+ * internal nodes built top-down; the caller freed at least that many. order
+ * receives the new internal nodes (count - 1 entries) for the refit. The
+ * larger part is pushed first, so the stack holds at most log2(count) + 1
+ * tasks. */
+static void build_over(tb_tree* tree, int32_t* units, int32_t count, int32_t* order) {
   tb_tree_node* n = tree->nodes;
-  int32_t found = 0;
-  for (int32_t i = 0; i < tree->capacity; ++i)
-    if (n[i].height == 0) leaves[found++] = i;
-  for (int32_t i = 0; i < tree->capacity; ++i)
-    if (n[i].height > 0) free_node(tree, i);
-  /* count - 1 internal nodes were freed and as many are taken back. The larger
-   * part is pushed first, so the stack holds at most log2(count) + 1 tasks. */
   build_task tasks[64];
   int ntasks = 0, created = 0;
   tasks[ntasks++] = (build_task){0, count, TB_TREE_NULL};
@@ -859,11 +885,11 @@ tb_result tb_tree_rebuild(tb_tree* tree) {
     build_task task = tasks[--ntasks];
     int32_t node;
     if (task.end - task.begin == 1) {
-      node = leaves[task.begin];
+      node = units[task.begin];
     } else {
       node = alloc_node(tree);
       order[created++] = node;
-      int32_t mid = split_leaves(n, leaves, task.begin, task.end);
+      int32_t mid = split_leaves(n, units, task.begin, task.end);
       build_task left = {task.begin, mid, node}, right = {mid, task.end, node};
       bool left_larger = mid - task.begin >= task.end - mid;
       tasks[ntasks++] = left_larger ? left : right;
@@ -880,6 +906,47 @@ tb_result tb_tree_rebuild(tb_tree* tree) {
     }
   }
   for (int32_t k = created - 1; k >= 0; --k) refit(n, order[k]);
-  tb_mem_free(leaves, (size_t)(2 * count) * sizeof *leaves);
+}
+
+tb_result tb_tree_rebuild(tb_tree* tree) {
+  if (tree == NULL) return TB_ERR_NULL_ARGUMENT;
+  int32_t count = tree->proxy_count;
+  if (count < 3) return TB_OK;
+  /* count leaves and count - 1 internal nodes: the work space holds both */
+  int32_t* leaves = tree->scratch;
+  int32_t* order = leaves + count;
+  tb_tree_node* n = tree->nodes;
+  int32_t found = 0;
+  for (int32_t i = 0; i < tree->capacity; ++i)
+    if (n[i].height == 0) leaves[found++] = i;
+  for (int32_t i = 0; i < tree->capacity; ++i)
+    if (n[i].height > 0) free_node(tree, i);
+  tree->enlarged = false;
+  build_over(tree, leaves, count, order);
   return TB_OK;
+}
+
+void tb_tree_rebuild_enlarged(tb_tree* tree) {
+  if (!tree->enlarged) return;
+  tree->enlarged = false;
+  /* Gather the units: the root's subtree cut below its marked nodes. The
+   * units fill the work space from the front, the pending nodes from the
+   * back; together they are disjoint subtrees, no more than the leaves,
+   * and the work space has a slot per node. */
+  int32_t* units = tree->scratch;
+  int32_t count = 0, pending = tree->scratch_capacity;
+  tb_tree_node* n = tree->nodes;
+  tree->scratch[--pending] = tree->root;
+  while (pending < tree->scratch_capacity) {
+    int32_t i = tree->scratch[pending++];
+    if (n[i].height == 0 || !n[i].enlarged) {
+      units[count++] = i;
+      continue;
+    }
+    tree->scratch[--pending] = n[i].child2;
+    tree->scratch[--pending] = n[i].child1;
+    free_node(tree, i);
+  }
+  for (int32_t k = 0; k < count; ++k) n[units[k]].parent = TB_TREE_NULL;
+  build_over(tree, units, count, units + count);
 }

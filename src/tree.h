@@ -41,6 +41,7 @@ typedef struct tb_tree_node {
   int32_t child1, child2; /* TB_TREE_NULL in a leaf */
   int32_t user_id;        /* leaf only */
   int32_t height;         /* 0: leaf, -1: free */
+  uint8_t enlarged;       /* internal: grown by tb_tree_enlarge_proxy since the last rebuild */
 } tb_tree_node;
 
 typedef struct tb_tree {
@@ -51,6 +52,9 @@ typedef struct tb_tree {
   int32_t root;
   int32_t proxy_count;
   float margin; /* fat AABB = tight AABB grown by this on every side (m) */
+  int32_t* scratch;         /* rebuild work space, one entry per node slot (never allocated by a rebuild) */
+  int32_t scratch_capacity; /* >= capacity */
+  bool enlarged;            /* some internal node is marked enlarged */
 } tb_tree;
 
 /* Called per proxy whose fat AABB overlaps the query box; return false to stop.
@@ -74,8 +78,10 @@ typedef float tb_tree_ray_fn(const tb_tree_ray_input* input, int32_t proxy, int3
 tb_result tb_tree_create(tb_tree* tree, float margin);
 /* Frees all memory; the tree is left empty and usable (as if just created). */
 void tb_tree_destroy(tb_tree* tree);
-/* Bytes the tree's node array holds. */
-static inline size_t tb_tree_bytes(const tb_tree* tree) { return (size_t)tree->capacity * sizeof *tree->nodes; }
+/* Bytes the tree's node array and rebuild work space hold. */
+static inline size_t tb_tree_bytes(const tb_tree* tree) {
+  return (size_t)tree->capacity * sizeof *tree->nodes + (size_t)tree->scratch_capacity * sizeof *tree->scratch;
+}
 
 /* How many public trees (tb_dynamic_tree, dynamic_tree_api.c) exist. */
 int tb_dynamic_tree_live_count(void);
@@ -100,6 +106,19 @@ bool tb_tree_destroy_proxy(tb_tree* tree, int32_t proxy);
 bool tb_tree_move_proxy(tb_tree* tree, int32_t proxy, tb_aabb aabb, tb_vec2 displacement);
 /* The same with the proxy's own margin (the one it was created with). */
 bool tb_tree_move_proxy_with_margin(tb_tree* tree, int32_t proxy, tb_aabb aabb, float margin, tb_vec2 displacement);
+/* The same decision and fat AABB as tb_tree_move_proxy_with_margin, but the
+ * proxy keeps its place: its ancestors grow to contain the new box and are
+ * marked, and tb_tree_rebuild_enlarged later rebuilds the marked part. For
+ * many proxies moved at once (a step): a re-insertion searches and rotates
+ * per proxy, the rebuild sorts them all together (Box2D v3 does the same).
+ * Queries stay correct in between (every box contains its children's);
+ * tb_tree_validate accepts a marked node larger than its children's union.
+ * A create, destroy or re-inserting move rebuilds the marked part first. */
+bool tb_tree_enlarge_proxy(tb_tree* tree, int32_t proxy, tb_aabb aabb, float margin, tb_vec2 displacement);
+/* Rebuilds what tb_tree_enlarge_proxy marked: the marked nodes are freed, and
+ * the subtrees and leaves hanging from them are joined again top-down with the
+ * binned perimeter heuristic of tb_tree_rebuild. Never allocates. */
+void tb_tree_rebuild_enlarged(tb_tree* tree);
 
 bool tb_tree_is_proxy(const tb_tree* tree, int32_t proxy);
 /* The stored (fat) AABB; a zero box for a bad proxy. */
@@ -131,15 +150,16 @@ int tb_tree_get_height(const tb_tree* tree);
  * nodes over the root's perimeter (1 for two proxies; 0 when undefined). */
 float tb_tree_get_area_ratio(const tb_tree* tree);
 /* Full check: links, free list, counts, heights, category bits, every internal
- * AABB equal to the union of its children's. */
+ * AABB equal to the union of its children's (containing it, for a node marked
+ * enlarged). */
 bool tb_tree_validate(const tb_tree* tree);
 
 /* Rebuilds the hierarchy over the current proxies, top-down with a binned
  * perimeter heuristic (for static or freshly loaded sets: about 5% lower cost
  * than inserts). Proxy ids and fat AABBs are kept. The result is not AVL
  * balanced (height follows the splits, typically log2 n + 3); later updates
- * rebalance the paths they touch. Errors: TB_ERR_NULL_ARGUMENT,
- * TB_ERR_OUT_OF_MEMORY (tree unchanged). */
+ * rebalance the paths they touch. Never allocates (its work space grows with
+ * the nodes). Errors: TB_ERR_NULL_ARGUMENT. */
 tb_result tb_tree_rebuild(tb_tree* tree);
 
 #endif

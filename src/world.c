@@ -337,8 +337,9 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   for (int i = 0; i < w->awake_count; ++i) {
     int index = w->awake[i];
     tb_body_keep_in_world(tb_body_at(w, index));
-    tb_body_update_proxies(w, index, tb_scale(0.25f * time_step, tb_body_at(w, index)->linear_velocity));
+    tb_body_update_proxies(w, index, tb_scale(0.25f * time_step, tb_body_at(w, index)->linear_velocity), true);
   }
+  tb_broad_phase_rebuild(w);
   double t5 = tb_clock_ms();
   tb_update_sleep(w);
   double t6 = tb_clock_ms();

@@ -137,8 +137,10 @@ void tb_chains_destroy_of_body(tb_world* w, int body);
 /* Frees what each live chain owns; the chain pool itself goes with the world. */
 void tb_chains_free(tb_world* w);
 
-/* Shape AABBs and broad-phase proxies follow a body that moved. */
-void tb_body_update_proxies(tb_world* world, int body, tb_vec2 displacement);
+/* Shape AABBs and broad-phase proxies follow a body that moved. enlarge: the
+ * proxies keep their place in the tree and tb_broad_phase_rebuild joins them
+ * later (the step moves many at once); else each is re-inserted. */
+void tb_body_update_proxies(tb_world* world, int body, tb_vec2 displacement, bool enlarge);
 
 /* Free motion of one dynamic body over a step with the world's integrator,
  * within the step's speed caps (motion.c). false when a state is not finite

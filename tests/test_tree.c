@@ -277,6 +277,88 @@ START_TEST(queries_match_brute_force) {
 }
 END_TEST
 
+static int marked_nodes(const tb_tree* tree) {
+  int marked = 0;
+  for (int32_t i = 0; i < tree->capacity; ++i) marked += tree->nodes[i].height > 0 && tree->nodes[i].enlarged;
+  return marked;
+}
+
+/* Moves that enlarge in place (as the world's step moves its proxies) keep
+ * every query right before the rebuild, and the partial rebuild leaves an
+ * exact tree of about the quality of a full rebuild; other changes made
+ * while nodes are marked rebuild first. */
+START_TEST(enlarged_moves_and_partial_rebuild) {
+  static model m;
+  memset(&m, 0, sizeof m);
+  tb_tree tree;
+  ck_assert_int_eq(tb_tree_create(&tree, MARGIN), TB_OK);
+  unsigned rng = 0x5eed5u;
+  for (int i = 0; i < N_PROXIES; ++i) model_add(&tree, &m, random_box(&rng), (uint64_t)1 << (i % 3));
+  ck_assert_int_eq(tb_tree_get_proxy_count(&tree), N_PROXIES);
+  for (int round = 0; round < 6; ++round) {
+    /* a step: every proxy drifts, a tenth of them fast and stretched along
+     * their motion, a hundredth jump; round 3 moves all of them back to
+     * unstretched boxes (a stretch that shrinks leaves larger ancestors) */
+    int enlarged = 0;
+    for (int i = 0; i < m.count; ++i) {
+      tb_aabb b = m.tight[i];
+      float r = tbt_rand(&rng, 0.0f, 1.0f);
+      tb_vec2 disp = {0.0f, 0.0f};
+      if (r < 0.01f) {
+        b = random_box(&rng);
+      } else {
+        float speed = r < 0.11f ? 1.0f : 0.05f;
+        tb_vec2 d = {tbt_rand(&rng, -speed, speed), tbt_rand(&rng, -speed, speed)};
+        b = (tb_aabb){{b.lower.x + d.x, b.lower.y + d.y}, {b.upper.x + d.x, b.upper.y + d.y}};
+        if (round != 3) disp = d;
+      }
+      m.tight[i] = b;
+      enlarged += tb_tree_enlarge_proxy(&tree, m.proxy[i], b, MARGIN, disp);
+    }
+    ck_assert_int_gt(enlarged, N_PROXIES / 20);
+    ck_assert_int_lt(enlarged, N_PROXIES);
+    ck_assert(tree.enlarged);
+    ck_assert_int_gt(marked_nodes(&tree), 0);
+    check_against_brute_force(&tree, &m, 30 + (unsigned)round); /* loose but right */
+    int nodes = tree.node_count;
+    tb_tree_rebuild_enlarged(&tree);
+    ck_assert(!tree.enlarged);
+    ck_assert_int_eq(marked_nodes(&tree), 0);
+    ck_assert_int_eq(tree.node_count, nodes); /* the freed internal nodes are taken back */
+    check_against_brute_force(&tree, &m, 40 + (unsigned)round); /* exact again */
+  }
+  /* a box still inside its fat box marks nothing */
+  ck_assert(!tb_tree_enlarge_proxy(&tree, m.proxy[0], m.tight[0], MARGIN, (tb_vec2){0.0f, 0.0f}));
+  ck_assert(!tree.enlarged);
+  /* the partial rebuilds kept the quality of a full one, within 10% */
+  float partial = tb_tree_get_area_ratio(&tree);
+  ck_assert_int_eq(tb_tree_rebuild(&tree), TB_OK);
+  float full = tb_tree_get_area_ratio(&tree);
+  ck_assert_msg(partial < 1.1f * full, "area ratio %g after partial rebuilds, %g after a full one", (double)partial,
+                (double)full);
+  /* create, destroy and move with marked nodes: each rebuilds first */
+  for (int k = 0; k < 200; ++k) {
+    int i = k * 37 % m.count;
+    if (m.proxy[i] < 0) continue;
+    m.tight[i] = random_box(&rng);
+    ck_assert(tb_tree_enlarge_proxy(&tree, m.proxy[i], m.tight[i], MARGIN, (tb_vec2){0.0f, 0.0f}));
+    if (k % 3 == 0) {
+      ck_assert(tb_tree_destroy_proxy(&tree, m.proxy[i]));
+      m.proxy[i] = -1;
+      model_add(&tree, &m, random_box(&rng), 1u);
+    } else if (k % 3 == 1) {
+      m.tight[i] = random_box(&rng);
+      ck_assert(tb_tree_move_proxy(&tree, m.proxy[i], m.tight[i], (tb_vec2){0.0f, 0.0f}));
+    }
+    ck_assert(tb_tree_validate(&tree));
+  }
+  check_against_brute_force(&tree, &m, 50);
+  tb_tree_rebuild_enlarged(&tree);
+  check_against_brute_force(&tree, &m, 51);
+  tb_tree_destroy(&tree);
+}
+END_TEST
+
 typedef struct clip_ctx {
   const tb_tree* tree;
   tb_tree_ray_input original;
@@ -666,6 +748,7 @@ static Suite* tree_suite(void) {
   TCase* tc = tcase_create("tree");
   tcase_set_timeout(tc, 120); /* generous for sanitizer builds; about a second at -O2 */
   tcase_add_test(tc, queries_match_brute_force);
+  tcase_add_test(tc, enlarged_moves_and_partial_rebuild);
   tcase_add_test(tc, ray_cast_clipping);
   tcase_add_test(tc, fat_aabb_reinserts_only_when_left);
   tcase_add_test(tc, height_bounds);
