@@ -6,6 +6,8 @@
  * builders turn it off there).
  *
  *   bench_v3_tumble SCENE [STEPS]
+ * SCENE pyramid_base_N (N in 1..100) is large_pyramid with a base of N boxes
+ * (the small-pyramid scaling rows; sleeping off, 500 steps by default).
  * prints: tumble SCENE STEPS MS_PER_STEP bodies B shapes S joints J pairs P
  * touching T awake A bytes N body_bytes BB contact_bytes CB (the world's bytes,
  * and its body and contact parts per body and per contact) */
@@ -33,7 +35,17 @@ int main(int argc, char** argv) {
     fprintf(stderr, "usage: %s SCENE [STEPS]\n", argv[0]);
     return 2;
   }
-  const tb_scene* sc = tb_scene_find(argv[1]);
+  /* pyramid_base_N: the catalogue builds large_pyramid at a scale, base 100 x scale */
+  int base = 0;
+  const char* name = argv[1];
+  if (sscanf(argv[1], "pyramid_base_%d", &base) == 1) {
+    if (base < 1 || base > 100) {
+      fprintf(stderr, "%s: %s: the base is 1 to 100\n", argv[0], argv[1]);
+      return 2;
+    }
+    name = "large_pyramid";
+  }
+  const tb_scene* sc = tb_scene_find(name);
   if (sc == NULL) {
     fprintf(stderr, "%s: no scene named %s\n", argv[0], argv[1]);
     return 2;
@@ -41,7 +53,7 @@ int main(int argc, char** argv) {
   int steps = argc > 2 ? atoi(argv[2]) : sc->default_steps;
   if (steps < 2) steps = 2;
   tb_world_id world = tb_scene_create_world(sc);
-  sc->build(world, 1.0f);
+  sc->build(world, base > 0 ? (float)base / 100.0f : 1.0f);
   if (!v3_sleeps(sc->name)) tb_world_enable_sleeping(world, false);
   if (sc->update != NULL) sc->update(world, 0);
   if (tb_world_step(world, 1.0f / 60.0f, 4) != TB_OK) {
@@ -68,7 +80,7 @@ int main(int argc, char** argv) {
   printf(
       "tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d bytes %zu"
       " body_bytes %.0f contact_bytes %.0f\n",
-      sc->name, steps, ms, c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count,
+      argv[1], steps, ms, c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count,
       c.awake_body_count, mem.total, c.body_count > 0 ? (double)mem.bodies / c.body_count : 0.0,
       c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0);
   tb_destroy_world(world);

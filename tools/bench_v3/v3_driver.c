@@ -7,6 +7,9 @@
  * shared machine does not count.
  *
  *   bench_v3_box2d SCENE [STEPS]
+ * SCENE pyramid_base_N (N in 1..100) is v3's large pyramid with a base of N
+ * boxes, built here through v3's API the way v3's builder lays it out (the
+ * small-pyramid scaling rows; sleeping off, 500 steps by default).
  * prints: box2d_v3 SCENE STEPS MS_PER_STEP bodies B shapes S joints J pairs P
  * coloured K awake A, where P counts v3's contacts (shape pairs whose fat
  * boxes overlap) and K the constraints in its graph colours (awake touching
@@ -41,6 +44,31 @@ static const scene k_scenes[] = {
     {"washer", CreateWasher, NULL, 500},
 };
 
+/* A pyramid of `base` boxes of half-size 0.5 (density 1) on a static ground
+ * box of half-extents 100 x 1 whose top is y = 0; row i (from 0 at the
+ * bottom) holds base - i boxes centred on x = 0, 1 m apart. */
+static int g_base;
+static void create_pyramid(b2WorldId world) {
+  b2World_EnableSleeping(world, false);
+  b2BodyDef ground_def = b2DefaultBodyDef();
+  ground_def.position = (b2Pos){0.0f, -1.0f};
+  b2BodyId ground = b2CreateBody(world, &ground_def);
+  b2ShapeDef ground_shape = b2DefaultShapeDef();
+  b2Polygon ground_box = b2MakeBox(100.0f, 1.0f);
+  b2CreatePolygonShape(ground, &ground_shape, &ground_box);
+  b2BodyDef def = b2DefaultBodyDef();
+  def.type = b2_dynamicBody;
+  b2ShapeDef shape = b2DefaultShapeDef();
+  shape.density = 1.0f;
+  b2Polygon box = b2MakeSquare(0.5f);
+  for (int row = 0; row < g_base; ++row)
+    for (int k = 0; k < g_base - row; ++k) {
+      def.position = (b2Pos){0.5f * (float)(row + 1) + (float)k - 0.5f * (float)g_base, (float)row + 0.5f};
+      b2BodyId body = b2CreateBody(world, &def);
+      b2CreatePolygonShape(body, &shape, &box);
+    }
+}
+
 static double cpu_seconds(void) {
   struct timespec t;
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
@@ -55,6 +83,14 @@ int main(int argc, char** argv) {
   const scene* sc = NULL;
   for (size_t i = 0; i < sizeof k_scenes / sizeof k_scenes[0]; ++i)
     if (strcmp(k_scenes[i].name, argv[1]) == 0) sc = &k_scenes[i];
+  scene pyramid = {argv[1], create_pyramid, NULL, 500};
+  if (sscanf(argv[1], "pyramid_base_%d", &g_base) == 1) {
+    if (g_base < 1 || g_base > 100) {
+      fprintf(stderr, "%s: %s: the base is 1 to 100\n", argv[0], argv[1]);
+      return 2;
+    }
+    sc = &pyramid;
+  }
   if (sc == NULL) {
     fprintf(stderr, "%s: no v3 scene named %s\n", argv[0], argv[1]);
     return 2;
