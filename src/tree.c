@@ -911,7 +911,10 @@ static void build_over(tb_tree* tree, int32_t* units, int32_t count, int32_t* or
 tb_result tb_tree_rebuild(tb_tree* tree) {
   if (tree == NULL) return TB_ERR_NULL_ARGUMENT;
   int32_t count = tree->proxy_count;
-  if (count < 3) return TB_OK;
+  if (count < 3) { /* nothing to reorder; marked boxes are still refitted */
+    tb_tree_rebuild_enlarged(tree);
+    return TB_OK;
+  }
   /* count leaves and count - 1 internal nodes: the work space holds both */
   int32_t* leaves = tree->scratch;
   int32_t* order = leaves + count;
