@@ -36,6 +36,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "color.h"
 #include "contact.h"
 #include "math_internal.h"
 #include "memory.h"
@@ -43,15 +44,7 @@
 #include "solver.h"
 #include "world.h"
 #include "units.h"
-
-#if !defined(__GNUC__)
-#error "tumble's contact solver needs GCC-style vector extensions (GCC or Clang)"
-#endif
-
-typedef float tb_f4 __attribute__((vector_size(16)));
-typedef int32_t tb_i4 __attribute__((vector_size(16)));
-
-#define TB_COLORS 24
+#include "wide.h"
 
 /* Deep overlap (bodies created or moved into each other): the soft push of a
  * point only grows down to the depth its load explains plus TB_DEEP_OVERLAP;
@@ -157,94 +150,7 @@ static inline tb_contact* step_contact(tb_world* w, int k) {
   return (tb_contact*)tb_pool_at(&w->contacts, w->step_contacts[k]);
 }
 
-/* ---- lanes ------------------------------------------------------------------ */
-
-static inline tb_f4 splat(float x) { return (tb_f4){x, x, x, x}; }
-static inline tb_f4 blend(tb_i4 mask, tb_f4 a, tb_f4 b) { return (tb_f4)(((tb_i4)a & mask) | ((tb_i4)b & ~mask)); }
-static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return blend(a > b, a, b); }
-static inline tb_f4 fabs4(tb_f4 a) { return (tb_f4)((tb_i4)a & (tb_i4){INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX}); }
-static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return blend(a < b, a, b); }
-
-/* Four solver bodies, field by field. A solver body begins with two rows of
- * four floats, (v.x, v.y, w, inv_mass) and (inv_inertia, da, dp.x, dp.y):
- * four bodies' rows are loaded whole and transposed into columns, and the
- * first rows are transposed back and stored whole (inv_mass as it was read). */
-_Static_assert(offsetof(tb_solver_body, v) == 0 && offsetof(tb_solver_body, w) == 8 &&
-                   offsetof(tb_solver_body, inv_mass) == 12 && offsetof(tb_solver_body, inv_inertia) == 16 &&
-                   offsetof(tb_solver_body, da) == 20 && offsetof(tb_solver_body, dp) == 24 &&
-                   sizeof(tb_solver_body) >= 32,
-               "the wide gather reads a solver body as two rows of four floats");
-
-typedef struct wide_body {
-  tb_f4 vx, vy, w, inv_mass;
-  tb_f4 inv_inertia, da, dpx, dpy;
-} wide_body;
-
-/* lane k of the result: lane i_k of a (0-3) or of b (4-7) */
-#if defined(__clang__) || __GNUC__ >= 12
-#define SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
-#else
-#define SHUFFLE(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (tb_i4){i0, i1, i2, i3})
-#endif
-
-/* rows <-> columns of a 4x4 matrix */
-static inline void transpose(tb_f4 m[4]) {
-  tb_f4 t0 = SHUFFLE(m[0], m[1], 0, 4, 1, 5), t1 = SHUFFLE(m[2], m[3], 0, 4, 1, 5);
-  tb_f4 t2 = SHUFFLE(m[0], m[1], 2, 6, 3, 7), t3 = SHUFFLE(m[2], m[3], 2, 6, 3, 7);
-  m[0] = SHUFFLE(t0, t1, 0, 1, 4, 5);
-  m[1] = SHUFFLE(t0, t1, 2, 3, 6, 7);
-  m[2] = SHUFFLE(t2, t3, 0, 1, 4, 5);
-  m[3] = SHUFFLE(t2, t3, 2, 3, 6, 7);
-}
-
-/* row 0 or 1 of the solver bodies idx[0..3], transposed */
-static inline void load_rows(const tb_solver_body* states, const int32_t* idx, int row, tb_f4 m[4]) {
-  memcpy(&m[0], (const float*)&states[idx[0]] + 4 * row, sizeof m[0]);
-  memcpy(&m[1], (const float*)&states[idx[1]] + 4 * row, sizeof m[1]);
-  memcpy(&m[2], (const float*)&states[idx[2]] + 4 * row, sizeof m[2]);
-  memcpy(&m[3], (const float*)&states[idx[3]] + 4 * row, sizeof m[3]);
-  transpose(m);
-}
-
-static inline wide_body gather_velocities(const tb_solver_body* states, const int32_t* idx) {
-  tb_f4 m[4];
-  load_rows(states, idx, 0, m);
-  return (wide_body){.vx = m[0], .vy = m[1], .w = m[2], .inv_mass = m[3]};
-}
-
-/* always inlined: a call would return the eight columns through memory */
-static inline __attribute__((always_inline)) wide_body gather(const tb_solver_body* states, const int32_t* idx) {
-  wide_body b = gather_velocities(states, idx);
-  tb_f4 m[4];
-  load_rows(states, idx, 1, m);
-  b.inv_inertia = m[0];
-  b.da = m[1];
-  b.dpx = m[2];
-  b.dpy = m[3];
-  return b;
-}
-
-static inline __attribute__((always_inline)) void scatter(tb_solver_body* states, const int32_t* idx,
-                                                          const wide_body* b) {
-  tb_f4 m[4] = {b->vx, b->vy, b->w, b->inv_mass};
-  transpose(m);
-  memcpy(&states[idx[0]], &m[0], sizeof m[0]);
-  memcpy(&states[idx[1]], &m[1], sizeof m[1]);
-  memcpy(&states[idx[2]], &m[2], sizeof m[2]);
-  memcpy(&states[idx[3]], &m[3], sizeof m[3]);
-}
-
 /* ---- prepare ------------------------------------------------------------------ */
-
-/* Four lanes of bodies or contacts, field by field. */
-#define LANES(p, field) ((tb_f4){(p)[0]->field, (p)[1]->field, (p)[2]->field, (p)[3]->field})
-#define INT_LANES(p, field) ((tb_i4){(p)[0]->field, (p)[1]->field, (p)[2]->field, (p)[3]->field})
-
-/* 1 / x where x > 0, else 0 */
-static inline tb_f4 inverse_or_zero(tb_f4 x) {
-  const tb_f4 zero = splat(0.0f);
-  return blend(x > zero, splat(1.0f) / x, zero);
-}
 
 /* The effective masses of a block's points at their arms now: normal and
  * tangent mass of each point, and the 2x2 effective mass of the two normal
@@ -442,49 +348,11 @@ static void clear_lane(tb_wide_contact* wc, int lane, int static_index) {
   wc->a[lane] = wc->b[lane] = static_index;
 }
 
-/* Greedy colouring of the contacts in waiting (step contact, body a, body b;
- * -1 for a body that does not move), from colour first on: the first colour
- * that neither dynamic body uses, left in each constraint's lane field.
- * Bodies that never move under impulses (static, kinematic) are shared
- * freely: their velocity is written back unchanged. A round has TB_COLORS
- * colours; the contacts that find none wait for the next round, which starts
- * with every colour free again (colours first + TB_COLORS r + 0..TB_COLORS-1
- * in round r). Ordinary scenes take one round. A pile-up's bodies touch
- * hundreds of others: with one round, the contacts left over were solved one
- * by one, each alone in a block of four (688 bytes a contact, 360 of the
- * 527 MB of 1,000 bodies created at one point). Returns the next free colour. */
-static int color_rounds(tb_world* w, int bodies, uint32_t* bits, int32_t* waiting, int left, int first) {
-  tb_contact_constraint* cs = constraints(w);
-  int colors = first;
-  while (left > 0) {
-    memset(bits, 0, (size_t)bodies * sizeof(uint32_t));
-    int still = 0;
-    for (int i = 0; i < left; ++i) {
-      int k = waiting[3 * i], a = waiting[3 * i + 1], b = waiting[3 * i + 2];
-      uint32_t used = (a >= 0 ? bits[a] : 0u) | (b >= 0 ? bits[b] : 0u);
-      if (!(~used & ((1u << TB_COLORS) - 1u))) { /* no colour left in this round */
-        waiting[3 * still] = k;
-        waiting[3 * still + 1] = a;
-        waiting[3 * still + 2] = b;
-        still += 1;
-        continue;
-      }
-      int color = __builtin_ctz(~used);
-      if (a >= 0) bits[a] |= 1u << color;
-      if (b >= 0) bits[b] |= 1u << color;
-      cs[k].lane = colors + color;
-    }
-    left = still;
-    colors += TB_COLORS;
-  }
-  return colors;
-}
-
 /* The contacts' colours: first those between two moving bodies, then, in
  * colours of their own from *fixed_from on, those with a body that does not
  * move (static or kinematic), so that every pass solves them last (see
- * tb_contact_solver_solve). Returns the number of colours. Needs scratch for
- * bodies + 3 x contacts ints. */
+ * tb_contact_solver_solve). Returns the number of colours, each contact's
+ * in its lane field. Needs scratch for bodies + 4 x contacts ints. */
 static int color_constraints(tb_world* w, const tb_step_context* ctx, int* fixed_from) {
   int bodies = ctx->static_index + 1, count = w->step_contact_count;
   uint32_t* bits = (uint32_t*)w->scratch;
@@ -509,8 +377,12 @@ static int color_constraints(tb_world* w, const tb_step_context* ctx, int* fixed
       waiting[3 * i + f] = waiting[3 * j + f];
       waiting[3 * j + f] = t;
     }
-  *fixed_from = color_rounds(w, bodies, bits, waiting, pairs, 0);
-  return color_rounds(w, bodies, bits, waiting + 3 * end, count - end, *fixed_from);
+  int32_t* color = waiting + 3 * count;
+  *fixed_from = tb_color_rounds(bodies, bits, waiting, pairs, 0, color);
+  int colors = tb_color_rounds(bodies, bits, waiting + 3 * end, count - end, *fixed_from, color);
+  tb_contact_constraint* cs = constraints(w);
+  for (int k = 0; k < count; ++k) cs[k].lane = color[k];
+  return colors;
 }
 
 /* Whether a lane has a point deeper than its push depth (less half
@@ -570,7 +442,7 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
 bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int count = w->step_contact_count;
   if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
-      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 3 * count, sizeof(int)))
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 4 * count, sizeof(int)))
     return false;
   int fixed_from = 0;
   int colors = color_constraints(w, ctx, &fixed_from);
@@ -1045,15 +917,6 @@ void tb_contact_solver_reset(tb_world* w) {
  * floor's contact stops the light box, and what the heavy one still closes
  * goes into the contact between the two boxes, which can push both apart
  * again; the static world cannot move out of the way. */
-/* Whether a later relax pass solves the block (relax_activity.h). */
-static inline __attribute__((always_inline)) bool block_active(const tb_step_context* ctx, const tb_wide_contact* c) {
-  const int32_t* changed_in = ctx->changed_in;
-  int32_t since = ctx->relax_pass - 1; /* the static dummy's entry is never written (0) */
-  int active = 0;
-  for (int lane = 0; lane < 4; ++lane) active |= (changed_in[c->a[lane]] >= since) | (changed_in[c->b[lane]] >= since);
-  return active != 0;
-}
-
 float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, bool backward) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   tb_f4 change = splat(0.0f);
@@ -1082,7 +945,7 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
       for (int i = lo, b = first; i < hi; ++i, b += step) solve_wide(&wide[b], ctx, false, false, true, false, &change);
     else /* a later relax pass: only blocks with a body that still moves */
       for (int i = lo, b = first; i < hi; ++i, b += step)
-        if (block_active(ctx, &wide[b])) {
+        if (tb_relax_lanes_active(ctx, wide[b].a, wide[b].b)) {
           solve_wide(&wide[b], ctx, false, false, true, true, &change);
           ctx->relax_solved += 1;
         }

@@ -41,4 +41,16 @@ static inline float tb_relax_speed(const tb_step_context* ctx, int s, tb_vec2 dv
   return fabsf(dv.x) + fabsf(dv.y) + fabsf(dw) * ctx->reach[s];
 }
 
+/* Whether a later relax pass solves a block of four lanes with solver bodies
+ * a[] and b[]: whether one of them is active (the static dummy's entry is
+ * never written, 0). */
+static inline __attribute__((always_inline)) bool tb_relax_lanes_active(const tb_step_context* ctx, const int32_t* a,
+                                                                       const int32_t* b) {
+  const int32_t* changed_in = ctx->changed_in;
+  int32_t since = ctx->relax_pass - 1;
+  int active = 0;
+  for (int lane = 0; lane < 4; ++lane) active |= (changed_in[a[lane]] >= since) | (changed_in[b[lane]] >= since);
+  return active != 0;
+}
+
 #endif

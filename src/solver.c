@@ -15,6 +15,7 @@
 
 #include "contact.h"
 #include "joint.h"
+#include "joint_wide.h"
 #include "math_internal.h"
 #include "memory.h"
 #include "relax_activity.h"
@@ -238,7 +239,8 @@ static float relax_pass(tb_world* w, tb_step_context* ctx, int substep, int pass
   else if (!ctx->relax_all && (int64_t)ctx->relax_solved * 10 > (int64_t)w->wide_count * 9)
     ctx->relax_all = true;
   ctx->relax_solved = 0;
-  for (int k = 0; k < w->step_joint_count; ++k) relax_joint(w, ctx, w->step_joints[k]);
+  for (int k = 0; k < w->scalar_joint_count; ++k) relax_joint(w, ctx, w->step_joints[k]);
+  tb_wide_joints_solve(w, ctx, false);
   float change = tb_contact_solver_solve(w, ctx, false, sweep_backward(substep, pass));
   tb_joint_tree_solve(w, ctx, false);
   return change;
@@ -318,16 +320,19 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     for (int k = 0; k < w->step_joint_count; ++k) tb_joint_at(w, w->step_joints[k])->in_tree = false;
     w->joint_tree.node_count = 0;
   }
+  tb_wide_joints_build(w, &ctx);
 
   for (int sub = 0; sub < substeps; ++sub) {
     integrate_velocities(w, &ctx, motions, w->time + (double)sub * h);
     if (ctx.enable_warm_starting) {
-      for (int k = 0; k < w->step_joint_count; ++k) tb_joint_warm_start(w, w->step_joints[k], &ctx);
+      for (int k = 0; k < w->scalar_joint_count; ++k) tb_joint_warm_start(w, w->step_joints[k], &ctx);
+      tb_wide_joints_warm_start(w, &ctx);
       tb_contact_solver_warm_start(w, &ctx);
     } else {
       tb_contact_solver_reset(w);
     }
-    for (int k = 0; k < w->step_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, true);
+    for (int k = 0; k < w->scalar_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, true);
+    tb_wide_joints_solve(w, &ctx, true);
     tb_contact_solver_solve(w, &ctx, true, sweep_backward(sub, 0));
     tb_joint_tree_solve(w, &ctx, true);
     tb_contact_solver_push_out(w, &ctx);
@@ -340,6 +345,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       change = relax_pass(w, &ctx, sub, pass);
   }
   tb_contact_solver_finish(w, &ctx);
+  tb_wide_joints_store(w);
   for (int k = 0; k < w->step_joint_count; ++k) tb_joint_store(w, w->step_joints[k], &ctx);
 
   /* finish: positions from the step start plus the motion; sleep clocks */

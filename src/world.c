@@ -275,6 +275,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   tb_mem_free(w->step_contacts, (size_t)w->step_contact_capacity * sizeof *w->step_contacts);
   tb_mem_free(w->step_joints, (size_t)w->step_joint_capacity * sizeof *w->step_joints);
   tb_joint_tree_free(&w->joint_tree);
+  tb_wide_joints_free(&w->wide_joints);
   tb_mem_free(w->scratch, (size_t)w->scratch_capacity * sizeof *w->scratch);
   tb_broad_phase_free(&w->broad_phase);
   tb_mem_free(w->begin_events, (size_t)w->begin_capacity * sizeof *w->begin_events);
@@ -949,6 +950,7 @@ static void memory_stats(const tb_world* w, tb_memory_stats* m) {
   m->broad_phase = tb_broad_phase_tree_bytes(&w->broad_phase);
   m->islands = tb_pool_bytes(&w->islands);
   m->solver = tb_solver_bytes(w) + tb_contact_solver_bytes(w) + tb_joint_tree_bytes(&w->joint_tree) +
+              tb_wide_joints_bytes(&w->wide_joints) +
               (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies +
               (size_t)w->step_contact_capacity * sizeof *w->step_contacts +
               (size_t)w->step_joint_capacity * sizeof *w->step_joints +

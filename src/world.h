@@ -9,6 +9,7 @@
 #include "error.h"
 #include "joint.h"
 #include "joint_tree.h"
+#include "joint_wide.h"
 #include "solver.h"
 #include "pool.h"
 #include "shape.h"
@@ -81,7 +82,9 @@ typedef struct tb_world {
   int push_capacity;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
+  int scalar_joint_count; /* the first ones of step_joints, solved one at a time; the rest in wide_joints */
   tb_joint_tree joint_tree;
+  tb_wide_joints wide_joints;
   int* scratch; /* island search stack and marks */
   int scratch_capacity;
   /* events of the last step (cleared when the next one starts) */

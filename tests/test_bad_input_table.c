@@ -1184,8 +1184,11 @@ START_TEST(shape_geometry_calls) {
   tb_circle fine = {{0, 0}, 0.5f};
   REJECT(tb_shape_set_circle(CHAIN_SEG, &fine), TB_ERR_INVALID_ARGUMENT, "chain");
   REJECT(tb_shape_set_polygon(CHAIN_SEG, &box), TB_ERR_INVALID_ARGUMENT, "chain");
-  /* a shape whose box would reach beyond the edge of the world at its body */
-  tb_capsule edge = {{9.95e6f, 0.0f}, {9.999e6f, 0.0f}, 2000.0f}; /* reaches 1e7 + 1 km */
+  /* a shape whose box would reach beyond the edge of the world at its body
+   * (placed in A's frame: A has moved and turned in the first step, its
+   * joints pulling against each other) */
+  tb_capsule edge = {tb_body_get_local_point(A, (tb_vec2){9.95e6f, 2.0f}),
+                     tb_body_get_local_point(A, (tb_vec2){9.999e6f, 2.0f}), 2000.0f}; /* reaches 1e7 + 1 km */
   REJECT(tb_shape_set_capsule(BOX, &edge), TB_ERR_INVALID_ARGUMENT, "beyond TB_MAX_LENGTH");
   /* dead, foreign-world and garbage shape handles, and a shape of a dead world */
   tb_world_id gone = tbt_world(0, 0);

@@ -1,0 +1,29 @@
+#include "color.h"
+
+#include <string.h>
+
+int tb_color_rounds(int bodies, uint32_t* bits, int32_t* waiting, int left, int first, int32_t* color) {
+  int colors = first;
+  while (left > 0) {
+    memset(bits, 0, (size_t)bodies * sizeof(uint32_t));
+    int still = 0;
+    for (int i = 0; i < left; ++i) {
+      int k = waiting[3 * i], a = waiting[3 * i + 1], b = waiting[3 * i + 2];
+      uint32_t used = (a >= 0 ? bits[a] : 0u) | (b >= 0 ? bits[b] : 0u);
+      if (!(~used & ((1u << TB_COLORS) - 1u))) { /* no colour left in this round */
+        waiting[3 * still] = k;
+        waiting[3 * still + 1] = a;
+        waiting[3 * still + 2] = b;
+        still += 1;
+        continue;
+      }
+      int c = __builtin_ctz(~used);
+      if (a >= 0) bits[a] |= 1u << c;
+      if (b >= 0) bits[b] |= 1u << c;
+      color[k] = colors + c;
+    }
+    left = still;
+    colors += TB_COLORS;
+  }
+  return colors;
+}
