@@ -278,12 +278,17 @@ void tb_broad_phase_update_pairs(tb_world* w) {
     const tb_shape* s = tb_shape_at(w, shape_index);
     tb_aabb fat = tb_tree_get_fat_aabb(&bp->trees[s->tree], s->proxy);
     pair_query q = {w, shape_index};
-    /* A dynamic proxy looks everywhere; others only among dynamic proxies. All
-     * category bits: a shared positive group collides whatever the bits say. */
-    tb_tree_query(&bp->trees[TB_DYNAMIC_BODY], fat, UINT64_MAX, pair_callback, &q);
+    /* A dynamic proxy looks everywhere; others only among dynamic proxies.
+     * Only proxies whose category the shape's mask takes can pair with it
+     * (tb_filters_collide), and the trees skip the subtrees with none (a
+     * grid of shapes that never collide with each other finds nothing at
+     * once); but a shared positive group collides whatever the bits say, so a
+     * shape with a positive group looks at all. */
+    uint64_t mask = s->filter.group_index > 0 ? UINT64_MAX : s->filter.mask_bits;
+    tb_tree_query(&bp->trees[TB_DYNAMIC_BODY], fat, mask, pair_callback, &q);
     if (s->tree == TB_DYNAMIC_BODY) {
-      tb_tree_query(&bp->trees[TB_KINEMATIC_BODY], fat, UINT64_MAX, pair_callback, &q);
-      tb_tree_query(&bp->trees[TB_STATIC_BODY], fat, UINT64_MAX, pair_callback, &q);
+      tb_tree_query(&bp->trees[TB_KINEMATIC_BODY], fat, mask, pair_callback, &q);
+      tb_tree_query(&bp->trees[TB_STATIC_BODY], fat, mask, pair_callback, &q);
     }
   }
   for (int i = 0; i < bp->move_count; ++i)

@@ -89,6 +89,14 @@ static bool reserve_nodes(tb_tree* t, int32_t extra) {
     t->scratch = scratch;
     t->scratch_capacity = (int32_t)cap;
   }
+  if (t->unit_capacity < cap / 2 + 1) {
+    int64_t units_cap = cap / 2 + 1;
+    tb_tree_build_unit* units =
+        tb_mem_grow(t->units, (size_t)t->unit_capacity * sizeof *units, (size_t)units_cap * sizeof *units);
+    if (units == NULL) return false;
+    t->units = units;
+    t->unit_capacity = (int32_t)units_cap;
+  }
   tb_tree_node* nodes = tb_mem_grow(t->nodes, (size_t)t->capacity * sizeof *nodes, (size_t)cap * sizeof *nodes);
   if (nodes == NULL) return false;
   int32_t old = t->capacity, new_cap = (int32_t)cap;
@@ -408,6 +416,7 @@ void tb_tree_destroy(tb_tree* tree) {
   if (tree == NULL) return;
   tb_mem_free(tree->nodes, (size_t)tree->capacity * sizeof *tree->nodes);
   tb_mem_free(tree->scratch, (size_t)tree->scratch_capacity * sizeof *tree->scratch);
+  tb_mem_free(tree->units, (size_t)tree->unit_capacity * sizeof *tree->units);
   float margin = tree->margin;
   *tree = (tb_tree){.nodes = NULL, .free_list = TB_TREE_NULL, .root = TB_TREE_NULL, .margin = margin};
 }
@@ -798,12 +807,11 @@ bool tb_tree_validate(const tb_tree* tree) {
 #define TB_TREE_BINS 16
 
 typedef struct build_task {
-  int32_t begin, end, parent; /* leaves[begin, end); parent TB_TREE_NULL: the root */
+  int32_t begin, end, parent; /* units[begin, end); parent TB_TREE_NULL: the root */
 } build_task;
 
-static inline float centroid_axis(const tb_tree_node* n, int32_t i, int axis) {
-  tb_aabb b = n[i].aabb;
-  return axis == 0 ? b.lower.x + b.upper.x : b.lower.y + b.upper.y; /* twice the centre */
+static inline float centroid_axis(const tb_tree_build_unit* u, int axis) {
+  return axis == 0 ? u->box.lower.x + u->box.upper.x : u->box.lower.y + u->box.upper.y; /* twice the centre */
 }
 
 static inline int bin_of(float c, float lo, float scale) {
@@ -811,13 +819,13 @@ static inline int bin_of(float c, float lo, float scale) {
   return k < 0 ? 0 : (k >= TB_TREE_BINS ? TB_TREE_BINS - 1 : k);
 }
 
-/* Splits leaves[begin, end) (two or more) in two non-empty parts; returns the
+/* Splits units[begin, end) (two or more) in two non-empty parts; returns the
  * first index of the second part. */
-static int32_t split_leaves(const tb_tree_node* n, int32_t* leaves, int32_t begin, int32_t end) {
+static int32_t split_units(tb_tree_build_unit* units, int32_t begin, int32_t end) {
   float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   for (int32_t k = begin; k < end; ++k) {
     for (int axis = 0; axis < 2; ++axis) {
-      float c = centroid_axis(n, leaves[k], axis);
+      float c = centroid_axis(&units[k], axis);
       if (c < lo[axis]) lo[axis] = c;
       if (c > hi[axis]) hi[axis] = c;
     }
@@ -829,8 +837,8 @@ static int32_t split_leaves(const tb_tree_node* n, int32_t* leaves, int32_t begi
   tb_aabb bin_box[TB_TREE_BINS];
   int32_t bin_count[TB_TREE_BINS] = {0};
   for (int32_t k = begin; k < end; ++k) {
-    int b = bin_of(centroid_axis(n, leaves[k], axis), lo[axis], scale);
-    bin_box[b] = bin_count[b] == 0 ? n[leaves[k]].aabb : aabb_union(bin_box[b], n[leaves[k]].aabb);
+    int b = bin_of(centroid_axis(&units[k], axis), lo[axis], scale);
+    bin_box[b] = bin_count[b] == 0 ? units[k].box : aabb_union(bin_box[b], units[k].box);
     bin_count[b] += 1;
   }
   /* cost(split after bin s) = P(left) n_left + P(right) n_right */
@@ -858,12 +866,12 @@ static int32_t split_leaves(const tb_tree_node* n, int32_t* leaves, int32_t begi
   if (best_split < 0) return begin + (end - begin) / 2;
   int32_t i = begin, j = end - 1;
   while (i <= j) {
-    if (bin_of(centroid_axis(n, leaves[i], axis), lo[axis], scale) <= best_split) {
+    if (bin_of(centroid_axis(&units[i], axis), lo[axis], scale) <= best_split) {
       ++i;
     } else {
-      int32_t tmp = leaves[i];
-      leaves[i] = leaves[j];
-      leaves[j] = tmp;
+      tb_tree_build_unit tmp = units[i];
+      units[i] = units[j];
+      units[j] = tmp;
       --j;
     }
   }
@@ -871,13 +879,16 @@ static int32_t split_leaves(const tb_tree_node* n, int32_t* leaves, int32_t begi
   return i;
 }
 
-/* Joins units[0, count) (leaves, or subtrees kept whole) under count - 1
- * internal nodes built top-down; the caller freed at least that many. order
+/* Joins nodes[0, count) (leaves, or subtrees kept whole) under count - 1
+ * internal nodes built top-down (split over the units, tree->units, their
+ * copies with their boxes); the caller freed at least that many. order
  * receives the new internal nodes (count - 1 entries) for the refit. The
  * larger part is pushed first, so the stack holds at most log2(count) + 1
  * tasks. */
-static void build_over(tb_tree* tree, int32_t* units, int32_t count, int32_t* order) {
+static void build_over(tb_tree* tree, const int32_t* nodes, int32_t count, int32_t* order) {
   tb_tree_node* n = tree->nodes;
+  tb_tree_build_unit* units = tree->units;
+  for (int32_t k = 0; k < count; ++k) units[k] = (tb_tree_build_unit){n[nodes[k]].aabb, nodes[k]};
   build_task tasks[64];
   int ntasks = 0, created = 0;
   tasks[ntasks++] = (build_task){0, count, TB_TREE_NULL};
@@ -885,11 +896,11 @@ static void build_over(tb_tree* tree, int32_t* units, int32_t count, int32_t* or
     build_task task = tasks[--ntasks];
     int32_t node;
     if (task.end - task.begin == 1) {
-      node = units[task.begin];
+      node = units[task.begin].node;
     } else {
       node = alloc_node(tree);
       order[created++] = node;
-      int32_t mid = split_leaves(n, units, task.begin, task.end);
+      int32_t mid = split_units(units, task.begin, task.end);
       build_task left = {task.begin, mid, node}, right = {mid, task.end, node};
       bool left_larger = mid - task.begin >= task.end - mid;
       tasks[ntasks++] = left_larger ? left : right;

@@ -44,6 +44,13 @@ typedef struct tb_tree_node {
   uint8_t enlarged;       /* internal: grown by tb_tree_enlarge_proxy since the last rebuild */
 } tb_tree_node;
 
+/* A unit of a rebuild: a leaf or a subtree kept whole, with its box copied
+ * beside it so that the splits read one array instead of the nodes. */
+typedef struct tb_tree_build_unit {
+  tb_aabb box;
+  int32_t node;
+} tb_tree_build_unit;
+
 typedef struct tb_tree {
   tb_tree_node* nodes;
   int32_t capacity;   /* slots in nodes */
@@ -54,6 +61,8 @@ typedef struct tb_tree {
   float margin; /* fat AABB = tight AABB grown by this on every side (m) */
   int32_t* scratch;         /* rebuild work space, one entry per node slot (never allocated by a rebuild) */
   int32_t scratch_capacity; /* >= capacity */
+  tb_tree_build_unit* units; /* the rebuild's units: at most the leaves, half the node slots plus one */
+  int32_t unit_capacity;     /* >= capacity / 2 + 1 */
   bool enlarged;            /* some internal node is marked enlarged */
 } tb_tree;
 
@@ -80,7 +89,8 @@ tb_result tb_tree_create(tb_tree* tree, float margin);
 void tb_tree_destroy(tb_tree* tree);
 /* Bytes the tree's node array and rebuild work space hold. */
 static inline size_t tb_tree_bytes(const tb_tree* tree) {
-  return (size_t)tree->capacity * sizeof *tree->nodes + (size_t)tree->scratch_capacity * sizeof *tree->scratch;
+  return (size_t)tree->capacity * sizeof *tree->nodes + (size_t)tree->scratch_capacity * sizeof *tree->scratch +
+         (size_t)tree->unit_capacity * sizeof *tree->units;
 }
 
 /* How many public trees (tb_dynamic_tree, dynamic_tree_api.c) exist. */
