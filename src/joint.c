@@ -710,6 +710,14 @@ void tb_joint_store(tb_world* w, int index, const tb_step_context* ctx) {
   j->motor_output = tb_saturate((double)inv_h * motor);
 }
 
+void tb_joint_store_point(tb_joint* j, tb_vec2 impulse, const tb_step_context* ctx) {
+  j->linear_impulse = impulse;
+  if (!impulses_finite(j)) zero_impulses(j); /* as tb_joint_store */
+  /* the spring, motor and limit impulses are off, so zero (tb_joint_prepare) */
+  j->force = tb_saturate2((double)ctx->inv_h * j->linear_impulse.x, (double)ctx->inv_h * j->linear_impulse.y);
+  j->torque = j->motor_output = 0.0f;
+}
+
 /* ==== body joint lists ======================================================== */
 
 static void link_edge(tb_world* w, int joint, int side) {

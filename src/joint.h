@@ -58,6 +58,16 @@ typedef struct tb_joint {
   float motor_output; /* motor torque (N m) or force (N) */
 } tb_joint;
 
+/* What the step's later passes need of a step joint (joint_tree.c,
+ * joint_wide.c), kept compact beside the step joints so that those passes
+ * do not read the 256-byte joint records again. Filled after prepare. */
+typedef struct tb_step_joint {
+  int32_t solver_a, solver_b;
+  int8_t rigid_rows; /* tb_joint_rigid_row_count, 0 for a skipped joint */
+  bool point_only;   /* joint_wide.c may take it (tb_wide_joint_fits), unless it is in a tree */
+  bool in_tree;      /* set by tb_joint_tree_build */
+} tb_step_joint;
+
 struct tb_world;
 
 /* Removes every joint of a body (when the body is destroyed). */
@@ -91,5 +101,8 @@ typedef struct tb_rigid_rows {
 int tb_joint_rigid_row_count(const tb_joint* j);
 void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out);
 void tb_joint_store(struct tb_world* w, int joint, const tb_step_context* ctx);
+/* tb_joint_store of a revolute joint with nothing but its point, whose
+ * accumulated impulse the wide joints kept (joint_wide.c). */
+void tb_joint_store_point(tb_joint* j, tb_vec2 impulse, const tb_step_context* ctx);
 
 #endif

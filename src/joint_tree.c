@@ -115,8 +115,8 @@ static bool is_node_body(const tb_step_context* ctx, int s) {
   return s != ctx->static_index && ctx->states[s].inv_mass > 0.0f;
 }
 
-static bool joint_fits(const tb_step_context* ctx, const tb_joint* j) {
-  if (j->skip || tb_joint_rigid_row_count(j) == 0) return false;
+static bool joint_fits(const tb_step_context* ctx, const tb_step_joint* j) {
+  if (j->rigid_rows == 0) return false; /* skipped, or nothing rigid */
   int s[2] = {j->solver_a, j->solver_b};
   for (int k = 0; k < 2; ++k)
     if (is_node_body(ctx, s[k]) && !(ctx->states[s[k]].inv_inertia > 0.0f)) return false;
@@ -154,10 +154,11 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
    * with Gauss-Seidel as a whole: stiff exact rows next to soft iterated ones
    * on the same bodies fight (a 100 x 100 joint grid turned jittery). */
   int *uf = t->body_scratch, *gs_only = t->body_scratch + bodies;
+  tb_step_joint* info = w->step_joint_info; /* (not the joint records: one pass fewer over them) */
   for (int i = 0; i < bodies; ++i) uf[i] = i, gs_only[i] = 0;
   for (int k = 0; k < joints; ++k) {
-    const tb_joint* j = tb_joint_at(w, w->step_joints[k]);
-    if (j->skip || tb_joint_rigid_row_count(j) == 0) continue;
+    const tb_step_joint* j = &info[k];
+    if (j->rigid_rows == 0) continue;
     bool na = is_node_body(ctx, j->solver_a), nb = is_node_body(ctx, j->solver_b);
     int root = find(uf, na ? j->solver_a : j->solver_b);
     if (na && nb) {
@@ -174,16 +175,16 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     if (!joint_fits(ctx, j)) gs_only[root] = 1;
   }
   for (int k = 0; k < joints; ++k) {
-    tb_joint* j = tb_joint_at(w, w->step_joints[k]);
-    if (!joint_fits(ctx, j)) continue;
-    j->in_tree = !gs_only[find(uf, is_node_body(ctx, j->solver_a) ? j->solver_a : j->solver_b)];
+    tb_step_joint* j = &info[k];
+    j->in_tree = joint_fits(ctx, j) && !gs_only[find(uf, is_node_body(ctx, j->solver_a) ? j->solver_a : j->solver_b)];
+    if (j->in_tree) tb_joint_at(w, w->step_joints[k])->in_tree = true; /* tb_joint_prepare cleared it */
   }
 
   /* nodes: body nodes first (awake order), then joint nodes */
   int* body_node = t->body_scratch;
   for (int i = 0; i < bodies; ++i) body_node[i] = -1;
   for (int k = 0; k < joints; ++k) {
-    const tb_joint* j = tb_joint_at(w, w->step_joints[k]);
+    const tb_step_joint* j = &info[k];
     if (!j->in_tree) continue;
     if (is_node_body(ctx, j->solver_a)) body_node[j->solver_a] = 0;
     if (is_node_body(ctx, j->solver_b)) body_node[j->solver_b] = 0;
@@ -192,10 +193,9 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     if (body_node[i] == 0) body_node[i] = add_node(t, 3, i);
   int body_nodes = t->node_count;
   for (int k = 0; k < joints; ++k) {
-    int index = w->step_joints[k];
-    const tb_joint* j = tb_joint_at(w, index);
+    const tb_step_joint* j = &info[k];
     if (!j->in_tree) continue;
-    int n = add_node(t, tb_joint_rigid_row_count(j), index);
+    int n = add_node(t, j->rigid_rows, w->step_joints[k]);
     t->nodes[n].a = is_node_body(ctx, j->solver_a) ? body_node[j->solver_a] : -1;
     t->nodes[n].b = is_node_body(ctx, j->solver_b) ? body_node[j->solver_b] : -1;
     t->nodes[n].sa = j->solver_a;

@@ -52,10 +52,9 @@ void tb_wide_joints_free(tb_wide_joints* wj) {
 
 size_t tb_wide_joints_bytes(const tb_wide_joints* wj) { return (size_t)wj->block_capacity * sizeof *wj->blocks; }
 
-/* Whether the joint is a point and nothing more, within the masses above. */
-static bool takes(const tb_joint* j, const tb_step_context* ctx) {
-  if (j->type != TB_JOINT_REVOLUTE || j->skip || j->in_tree || (j->enable_spring && j->hertz > 0.0f) ||
-      j->enable_motor || j->enable_limit)
+bool tb_wide_joint_fits(const tb_joint* j, const tb_step_context* ctx) {
+  if (j->type != TB_JOINT_REVOLUTE || j->skip || (j->enable_spring && j->hertz > 0.0f) || j->enable_motor ||
+      j->enable_limit)
     return false;
   const tb_solver_body *a = &ctx->states[j->solver_a], *b = &ctx->states[j->solver_b];
   float m = a->inv_mass + b->inv_mass;
@@ -78,14 +77,14 @@ void tb_wide_joints_build(tb_world* w, const tb_step_context* ctx) {
   if (!tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, bodies + 4 * count, sizeof(int))) return;
   int32_t* waiting = w->scratch + bodies;
   int32_t* color = w->scratch + bodies + 3 * count;
+  tb_step_joint* info = w->step_joint_info;
   int taken = 0;
   for (int k = 0; k < count; ++k) {
-    const tb_joint* j = tb_joint_at(w, w->step_joints[k]);
     color[k] = -1;
-    if (!takes(j, ctx)) continue;
+    if (!info[k].point_only || info[k].in_tree) continue;
     waiting[3 * taken] = k;
-    waiting[3 * taken + 1] = moving(ctx, j->solver_a);
-    waiting[3 * taken + 2] = moving(ctx, j->solver_b);
+    waiting[3 * taken + 1] = moving(ctx, info[k].solver_a);
+    waiting[3 * taken + 2] = moving(ctx, info[k].solver_b);
     taken += 1;
   }
   if (taken == 0) return;
@@ -105,21 +104,27 @@ void tb_wide_joints_build(tb_world* w, const tb_step_context* ctx) {
   if (!tb_array_reserve((void**)&wj->blocks, &wj->block_capacity, blocks, sizeof *wj->blocks)) return;
 
   /* the lane of each taken step joint (in waiting's room: the colouring is
-   * done with it), and the step joints: the others first in their order,
-   * then the taken ones */
+   * done with it), and the step joints and their info: the others first in
+   * their order, then the taken ones (their info in the blocks' room, free
+   * until the blocks are filled) */
   int32_t* lane_of = w->scratch + bodies;
   int32_t* moved = w->scratch + bodies + count;
+  tb_step_joint* moved_info = (tb_step_joint*)wj->blocks;
+  _Static_assert(sizeof(tb_wide_joint) >= 4 * sizeof(tb_step_joint), "a block holds the info of its four joints");
   int others = 0, t = 0;
   for (int k = 0; k < count; ++k) {
     int index = w->step_joints[k];
     if (color[k] >= 0) {
       lane_of[t] = next[color[k]]++;
+      moved_info[t] = info[k];
       moved[t++] = index;
     } else {
+      info[others] = info[k];
       w->step_joints[others++] = index;
     }
   }
   memcpy(w->step_joints + others, moved, (size_t)taken * sizeof *moved);
+  memcpy(info + others, moved_info, (size_t)taken * sizeof *moved_info);
   w->scalar_joint_count = others;
 
   wj->block_count = blocks;
@@ -246,11 +251,12 @@ void tb_wide_joints_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
         solve_block(&wj->blocks[b], ctx, tb_rigid_softness(), false, false);
 }
 
-void tb_wide_joints_store(tb_world* w) {
+void tb_wide_joints_store(tb_world* w, const tb_step_context* ctx) {
   const tb_wide_joints* wj = &w->wide_joints;
   for (int b = 0; b < wj->block_count; ++b) {
     const tb_wide_joint* j = &wj->blocks[b];
     for (int lane = 0; lane < 4; ++lane)
-      if (j->joint[lane] >= 0) tb_joint_at(w, j->joint[lane])->linear_impulse = (tb_vec2){j->px[lane], j->py[lane]};
+      if (j->joint[lane] >= 0)
+        tb_joint_store_point(tb_joint_at(w, j->joint[lane]), (tb_vec2){j->px[lane], j->py[lane]}, ctx);
   }
 }

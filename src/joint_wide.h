@@ -20,13 +20,18 @@ typedef struct tb_wide_joints {
 } tb_wide_joints;
 
 struct tb_world;
+struct tb_joint;
 
+/* Whether a prepared joint is one the wide joints can take, once it is known
+ * not to be in a joint tree: a revolute joint with nothing but its point, its
+ * bodies' masses within the bounds of joint_wide.c. */
+bool tb_wide_joint_fits(const struct tb_joint* j, const tb_step_context* ctx);
 void tb_wide_joints_free(tb_wide_joints* wj);
 size_t tb_wide_joints_bytes(const tb_wide_joints* wj);
 /* After the joints are prepared and the joint trees built: takes the step
- * joints it can solve, moves them to the end of the step joints (the others
- * keep their order) and sets w->scalar_joint_count to the others' count.
- * Out of memory it takes none. */
+ * joints it can solve (w->step_joint_info), moves them to the end of the
+ * step joints and their info (the others keep their order) and sets
+ * w->scalar_joint_count to the others' count. Out of memory it takes none. */
 void tb_wide_joints_build(struct tb_world* w, const tb_step_context* ctx);
 void tb_wide_joints_warm_start(struct tb_world* w, tb_step_context* ctx);
 /* One pass over the blocks, biased or (use_bias false) a relax pass, which
@@ -34,7 +39,7 @@ void tb_wide_joints_warm_start(struct tb_world* w, tb_step_context* ctx);
  * (relax_activity.h). */
 void tb_wide_joints_solve(struct tb_world* w, tb_step_context* ctx, bool use_bias);
 /* After the substeps: the impulses back into the joints (for the getters and
- * the next step's warm start). */
-void tb_wide_joints_store(struct tb_world* w);
+ * the next step's warm start), and what the getters report (tb_joint_store). */
+void tb_wide_joints_store(struct tb_world* w, const tb_step_context* ctx);
 
 #endif

@@ -155,7 +155,9 @@ static bool collect_joints(tb_world* w) {
 /* Room for the solver bodies (+1 static dummy) and their motion terms. */
 static bool reserve_scratch(tb_world* w) {
   int n = w->awake_count + 1;
-  return tb_array_reserve((void**)&w->states, &w->state_capacity, n, sizeof(tb_solver_body)) &&
+  return tb_array_reserve((void**)&w->step_joint_info, &w->step_joint_info_capacity, w->step_joint_count,
+                          sizeof(tb_step_joint)) &&
+         tb_array_reserve((void**)&w->states, &w->state_capacity, n, sizeof(tb_solver_body)) &&
          tb_array_reserve(&w->motions, &w->motion_capacity, n, sizeof(tb_body_motion)) &&
          tb_array_reserve((void**)&w->changed_in, &w->changed_in_capacity, n + 1, sizeof(int32_t)) &&
          tb_array_reserve((void**)&w->reach, &w->reach_capacity, n, sizeof(float));
@@ -247,7 +249,7 @@ static float relax_pass(tb_world* w, tb_step_context* ctx, int substep, int pass
 }
 
 int tb_solve(tb_world* w, float dt, int substeps) {
-  if (!reserve_scratch(w) || !collect_joints(w)) return 0; /* out of memory: the step is skipped */
+  if (!collect_joints(w) || !reserve_scratch(w)) return 0; /* out of memory: the step is skipped */
   int n = w->awake_count;
   float h = dt / (float)substeps;
   tb_step_context ctx = {0};
@@ -315,9 +317,18 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   }
 
   if (!tb_contact_solver_prepare(w, &ctx)) return 0; /* out of memory: the step is skipped */
-  for (int k = 0; k < w->step_joint_count; ++k) tb_joint_prepare(w, w->step_joints[k], &ctx);
+  for (int k = 0; k < w->step_joint_count; ++k) {
+    int index = w->step_joints[k];
+    tb_joint_prepare(w, index, &ctx);
+    const tb_joint* j = tb_joint_at(w, index);
+    w->step_joint_info[k] = (tb_step_joint){j->solver_a, j->solver_b, (int8_t)(j->skip ? 0 : tb_joint_rigid_row_count(j)),
+                                            tb_wide_joint_fits(j, &ctx), false};
+  }
   if (!tb_joint_tree_build(w, &ctx)) { /* out of memory: Gauss-Seidel solves every joint */
-    for (int k = 0; k < w->step_joint_count; ++k) tb_joint_at(w, w->step_joints[k])->in_tree = false;
+    for (int k = 0; k < w->step_joint_count; ++k) {
+      tb_joint_at(w, w->step_joints[k])->in_tree = false;
+      w->step_joint_info[k].in_tree = false;
+    }
     w->joint_tree.node_count = 0;
   }
   tb_wide_joints_build(w, &ctx);
@@ -345,8 +356,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       change = relax_pass(w, &ctx, sub, pass);
   }
   tb_contact_solver_finish(w, &ctx);
-  tb_wide_joints_store(w);
-  for (int k = 0; k < w->step_joint_count; ++k) tb_joint_store(w, w->step_joints[k], &ctx);
+  tb_wide_joints_store(w, &ctx);
+  for (int k = 0; k < w->scalar_joint_count; ++k) tb_joint_store(w, w->step_joints[k], &ctx);
 
   /* finish: positions from the step start plus the motion; sleep clocks */
   int bad = 0;

@@ -274,6 +274,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   tb_mem_free(w->new_contact_bodies, (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies);
   tb_mem_free(w->step_contacts, (size_t)w->step_contact_capacity * sizeof *w->step_contacts);
   tb_mem_free(w->step_joints, (size_t)w->step_joint_capacity * sizeof *w->step_joints);
+  tb_mem_free(w->step_joint_info, (size_t)w->step_joint_info_capacity * sizeof *w->step_joint_info);
   tb_joint_tree_free(&w->joint_tree);
   tb_wide_joints_free(&w->wide_joints);
   tb_mem_free(w->scratch, (size_t)w->scratch_capacity * sizeof *w->scratch);
@@ -954,6 +955,7 @@ static void memory_stats(const tb_world* w, tb_memory_stats* m) {
               (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies +
               (size_t)w->step_contact_capacity * sizeof *w->step_contacts +
               (size_t)w->step_joint_capacity * sizeof *w->step_joints +
+              (size_t)w->step_joint_info_capacity * sizeof *w->step_joint_info +
               (size_t)w->scratch_capacity * sizeof *w->scratch;
   m->events = (size_t)w->begin_capacity * sizeof *w->begin_events + (size_t)w->end_capacity * sizeof *w->end_events +
               (size_t)w->hit_capacity * sizeof *w->hit_events +

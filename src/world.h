@@ -82,6 +82,8 @@ typedef struct tb_world {
   int push_capacity;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
+  struct tb_step_joint* step_joint_info; /* per step joint, in step order (joint.h) */
+  int step_joint_info_capacity;
   int scalar_joint_count; /* the first ones of step_joints, solved one at a time; the rest in wide_joints */
   tb_joint_tree joint_tree;
   tb_wide_joints wide_joints;
