@@ -621,6 +621,7 @@ tb_result tb_body_set_mass_data(tb_body_id id, tb_mass_data md) {
   b->center = tb_transform_point(b->transform, b->local_center);
   b->center_residual = (tb_vec2){0.0f, 0.0f};
   b->linear_velocity = tb_add(b->linear_velocity, tb_cross_sv(b->angular_velocity, tb_sub(b->center, old_center)));
+  update_extents(w, b); /* about the new centre (sleep, relax passes and sweeps read them) */
   return TB_OK;
 }
 

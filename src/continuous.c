@@ -247,6 +247,23 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
   }
 }
 
+/* Whether a fast body's sweep can meet anything of the static tree: its
+ * swept box (both ends, grown by its extent and by the turn's bulge, which
+ * covers each shape's box in sweep_body) overlaps the tree's root box. Most
+ * fast bodies are far from the static world (a swinging grid, debris in the
+ * air): they skip the transforms and the shapes' boxes. */
+static bool may_reach_static(const tb_world* w, const tb_body* b) {
+  const tb_tree* tree = &w->broad_phase.trees[TB_STATIC_BODY];
+  if (tree->root == TB_TREE_NULL) return false;
+  float turn = fabsf(b->angle - b->angle0);
+  float r = b->max_extent * (1.0f + fminf(fminf(0.5f * turn, 0.125f * turn * turn), 2.0f));
+  tb_aabb box = {{fminf(b->center0.x, b->center.x) - r, fminf(b->center0.y, b->center.y) - r},
+                 {fmaxf(b->center0.x, b->center.x) + r, fmaxf(b->center0.y, b->center.y) + r}};
+  tb_aabb root = tree->nodes[tree->root].aabb;
+  return box.lower.x <= root.upper.x && root.lower.x <= box.upper.x && box.lower.y <= root.upper.y &&
+         root.lower.y <= box.upper.y;
+}
+
 int tb_solve_continuous(tb_world* w) {
   if (!w->enable_continuous) return 0;
   /* Fast bodies against the static world first, then bullets, which also see
@@ -261,7 +278,7 @@ int tb_solve_continuous(tb_world* w) {
       bullets += 1;
       continue;
     }
-    sweep_body(w, index, false);
+    if (may_reach_static(w, b)) sweep_body(w, index, false);
   }
   for (int i = 0; i < w->awake_count && bullets > 0; ++i) {
     int index = w->awake[i];
