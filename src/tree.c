@@ -557,16 +557,22 @@ static void stack_free(node_stack* s) {
   if (s->items != s->local) tb_mem_free(s->items, (size_t)s->capacity * sizeof *s->items);
 }
 
-static bool stack_push(node_stack* s, int32_t v) {
-  if (s->count == s->capacity) {
-    int32_t cap = s->capacity * 2;
-    int32_t* items = tb_mem_alloc((size_t)cap * sizeof *items);
-    if (items == NULL) return false;
-    memcpy(items, s->items, (size_t)s->count * sizeof *items);
-    stack_free(s);
-    s->items = items;
-    s->capacity = cap;
-  }
+/* The heap part of stack_push, kept out of line: queries push in their
+ * innermost loop and almost never spill. */
+static __attribute__((noinline)) bool stack_grow_push(node_stack* s, int32_t v) {
+  int32_t cap = s->capacity * 2;
+  int32_t* items = tb_mem_alloc((size_t)cap * sizeof *items);
+  if (items == NULL) return false;
+  memcpy(items, s->items, (size_t)s->count * sizeof *items);
+  stack_free(s);
+  s->items = items;
+  s->capacity = cap;
+  s->items[s->count++] = v;
+  return true;
+}
+
+static inline bool stack_push(node_stack* s, int32_t v) {
+  if (__builtin_expect(s->count == s->capacity, 0)) return stack_grow_push(s, v);
   s->items[s->count++] = v;
   return true;
 }
@@ -879,13 +885,43 @@ static int32_t split_units(tb_tree_build_unit* units, int32_t begin, int32_t end
   return i;
 }
 
+/* Splits units[begin, end) (two or more) at the middle of their centres
+ * along the axis where the centres spread most (Box2D v3's partial rebuild):
+ * two passes over the units against split_units' three with bins, for a
+ * tree a little less tight. Returns the first index of the second part. */
+static int32_t split_units_mid(tb_tree_build_unit* units, int32_t begin, int32_t end) {
+  float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (int32_t k = begin; k < end; ++k) {
+    for (int axis = 0; axis < 2; ++axis) {
+      float c = centroid_axis(&units[k], axis);
+      if (c < lo[axis]) lo[axis] = c;
+      if (c > hi[axis]) hi[axis] = c;
+    }
+  }
+  int axis = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
+  float middle = 0.5f * (lo[axis] + hi[axis]);
+  int32_t i = begin, j = end - 1;
+  while (i <= j) {
+    if (centroid_axis(&units[i], axis) < middle) {
+      ++i;
+    } else {
+      tb_tree_build_unit tmp = units[i];
+      units[i] = units[j];
+      units[j] = tmp;
+      --j;
+    }
+  }
+  if (i == begin || i == end) return begin + (end - begin) / 2; /* all centres (nearly) equal */
+  return i;
+}
+
 /* Joins nodes[0, count) (leaves, or subtrees kept whole) under count - 1
  * internal nodes built top-down (split over the units, tree->units, their
  * copies with their boxes); the caller freed at least that many. order
  * receives the new internal nodes (count - 1 entries) for the refit. The
  * larger part is pushed first, so the stack holds at most log2(count) + 1
  * tasks. */
-static void build_over(tb_tree* tree, const int32_t* nodes, int32_t count, int32_t* order) {
+static void build_over(tb_tree* tree, const int32_t* nodes, int32_t count, int32_t* order, bool binned) {
   tb_tree_node* n = tree->nodes;
   tb_tree_build_unit* units = tree->units;
   for (int32_t k = 0; k < count; ++k) units[k] = (tb_tree_build_unit){n[nodes[k]].aabb, nodes[k]};
@@ -900,7 +936,7 @@ static void build_over(tb_tree* tree, const int32_t* nodes, int32_t count, int32
     } else {
       node = alloc_node(tree);
       order[created++] = node;
-      int32_t mid = split_units(units, task.begin, task.end);
+      int32_t mid = binned ? split_units(units, task.begin, task.end) : split_units_mid(units, task.begin, task.end);
       build_task left = {task.begin, mid, node}, right = {mid, task.end, node};
       bool left_larger = mid - task.begin >= task.end - mid;
       tasks[ntasks++] = left_larger ? left : right;
@@ -936,7 +972,7 @@ tb_result tb_tree_rebuild(tb_tree* tree) {
   for (int32_t i = 0; i < tree->capacity; ++i)
     if (n[i].height > 0) free_node(tree, i);
   tree->enlarged = false;
-  build_over(tree, leaves, count, order);
+  build_over(tree, leaves, count, order, true);
   return TB_OK;
 }
 
@@ -962,5 +998,5 @@ void tb_tree_rebuild_enlarged(tb_tree* tree) {
     free_node(tree, i);
   }
   for (int32_t k = 0; k < count; ++k) n[units[k]].parent = TB_TREE_NULL;
-  build_over(tree, units, count, units + count);
+  build_over(tree, units, count, units + count, false);
 }

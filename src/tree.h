@@ -126,8 +126,11 @@ bool tb_tree_move_proxy_with_margin(tb_tree* tree, int32_t proxy, tb_aabb aabb, 
  * A create, destroy or re-inserting move rebuilds the marked part first. */
 bool tb_tree_enlarge_proxy(tb_tree* tree, int32_t proxy, tb_aabb aabb, float margin, tb_vec2 displacement);
 /* Rebuilds what tb_tree_enlarge_proxy marked: the marked nodes are freed, and
- * the subtrees and leaves hanging from them are joined again top-down with the
- * binned perimeter heuristic of tb_tree_rebuild. Never allocates. */
+ * the subtrees and leaves hanging from them are joined again top-down, each
+ * part split at the middle of its centres (cheaper than the binned perimeter
+ * heuristic of tb_tree_rebuild: the step rebuilds much of a moving tree every
+ * time, and the tighter tree saved less in queries than it cost; tumbler
+ * 0.95x, smash 0.94x). Never allocates. */
 void tb_tree_rebuild_enlarged(tb_tree* tree);
 
 bool tb_tree_is_proxy(const tb_tree* tree, int32_t proxy);
