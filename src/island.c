@@ -157,12 +157,21 @@ static void sleep_island(tb_world* w, const int* members, int count) {
  * over dynamic bodies, marking by awake index; members doubles as the stack.
  * Returns the member count; *resting tells whether every member and every
  * kinematic body it touches rested for TB_TIME_TO_SLEEP. */
-static int collect_island(tb_world* w, int seed, int* members, int* mark, bool* resting) {
+/* The island of seed (awake bodies, by BFS), marking its members by awake
+ * index; *resting: whether all of them (and the kinematic bodies they touch)
+ * have rested for TB_TIME_TO_SLEEP. With give_up, the search stops at the
+ * first body that has not: the island cannot sleep, and what was visited is
+ * marked MARK_AWAKE, which ends any later search of this step that reaches
+ * it the same way (a pile with one body still moving was searched whole
+ * every step: 4% of compounds and junkyard). */
+enum { MARK_NONE, MARK_SEEN, MARK_AWAKE };
+
+static int collect_island(tb_world* w, int seed, int* members, int* mark, bool* resting, bool give_up) {
   int count = 0, top = 0;
   *resting = true;
-  mark[tb_body_at(w, seed)->awake_index] = 1;
+  mark[tb_body_at(w, seed)->awake_index] = MARK_SEEN;
   members[count++] = seed;
-  while (top < count) {
+  while (top < count && (*resting || !give_up)) {
     int body = members[top++];
     const tb_body* b = tb_body_at(w, body);
     if (b->sleep_time < TB_TIME_TO_SLEEP) *resting = false;
@@ -172,12 +181,16 @@ static int collect_island(tb_world* w, int seed, int* members, int* mark, bool* 
       if (o->type == TB_STATIC_BODY || o->awake_index < 0) {
       } else if (o->type == TB_KINEMATIC_BODY) {
         if (o->sleep_time < TB_TIME_TO_SLEEP) *resting = false; /* a moving platform keeps it awake */
-      } else if (!mark[o->awake_index]) {
-        mark[o->awake_index] = 1;
+      } else if (mark[o->awake_index] == MARK_AWAKE) {
+        *resting = false; /* part of an island already found awake */
+      } else if (mark[o->awake_index] == MARK_NONE) {
+        mark[o->awake_index] = MARK_SEEN;
         members[count++] = other;
       }
     });
   }
+  if (!*resting)
+    for (int k = 0; k < count; ++k) mark[tb_body_at(w, members[k])->awake_index] = MARK_AWAKE;
   return count;
 }
 
@@ -187,7 +200,7 @@ void tb_sleep_island_of(tb_world* w, int body) {
   if (!tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, 2 * n, sizeof(int))) return;
   memset(w->scratch, 0, (size_t)n * sizeof(int));
   bool resting;
-  int count = collect_island(w, body, w->scratch + n, w->scratch, &resting);
+  int count = collect_island(w, body, w->scratch + n, w->scratch, &resting, false);
   sleep_island(w, w->scratch + n, count);
 }
 
@@ -212,7 +225,7 @@ void tb_update_sleep(tb_world* w) {
     int seed = w->awake[i];
     if (mark[i] || tb_body_at(w, seed)->sleep_time < TB_TIME_TO_SLEEP) continue;
     bool resting;
-    int count = collect_island(w, seed, members, mark, &resting);
+    int count = collect_island(w, seed, members, mark, &resting, true);
     if (!resting || island_count == (int)(sizeof island_starts / sizeof island_starts[0])) continue;
     island_starts[island_count++] = sleeper_count;
     memcpy(sleepers + sleeper_count, members, (size_t)count * sizeof(int));

@@ -400,6 +400,58 @@ END_TEST
 /* A kinematic platform sliding under a resting, frictionless box keeps the box
  * awake: the box itself does not move (no friction carries it), but what it
  * rests on does. Once the platform stops, both fall asleep. */
+/* A chain of 30 boxes resting on the ground (distance joints between
+ * neighbours), one island with a wheel held up between boxes 14 and 15 by
+ * revolute joints at its centre. Spinning freely, the wheel keeps the whole
+ * island awake: the sleep search gives up on an island at its first moving
+ * body, and a later search from the boxes beyond it must still find that
+ * island awake. Not spinning, everything sleeps. */
+static bool chain_with_wheel_sleeps(float spin) {
+  tb_world_id w = tbt_world(0.0f, -10.0f);
+  box_at(w, TB_STATIC_BODY, (tb_vec2){15.0f, -0.5f}, 40.0f, 0.5f, 0.6f);
+  tb_body_id box[30];
+  for (int i = 0; i < 30; ++i) box[i] = box_at(w, TB_DYNAMIC_BODY, (tb_vec2){(float)i, 0.25f}, 0.25f, 0.25f, 0.6f);
+  tb_body_def bd = tb_default_body_def();
+  bd.type = TB_DYNAMIC_BODY;
+  bd.position = (tb_vec2){14.5f, 0.75f};
+  bd.angular_velocity = spin;
+  tb_body_id wheel = tb_create_body(w, &bd);
+  tb_shape_def sd = tb_default_shape_def();
+  tb_circle c = {{0.0f, 0.0f}, 0.2f};
+  ck_assert(!tb_shape_id_is_null(tb_create_circle_shape(wheel, &sd, &c)));
+  for (int i = 0; i + 1 < 30; ++i) {
+    if (i == 14) continue;
+    tb_distance_joint_def jd = tb_default_distance_joint_def();
+    jd.body_a = box[i];
+    jd.body_b = box[i + 1];
+    jd.length = 1.0f;
+    ck_assert(!tb_joint_id_is_null(tb_create_distance_joint(w, &jd)));
+  }
+  for (int k = 14; k <= 15; ++k) {
+    tb_revolute_joint_def rd = tb_default_revolute_joint_def();
+    rd.body_a = box[k];
+    rd.body_b = wheel;
+    rd.local_anchor_a = tb_body_get_local_point(box[k], (tb_vec2){14.5f, 0.75f});
+    ck_assert(!tb_joint_id_is_null(tb_create_revolute_joint(w, &rd)));
+  }
+  step(w, 180);
+  bool any_awake = tb_body_is_awake(wheel);
+  int asleep = 0;
+  for (int i = 0; i < 30; ++i) {
+    any_awake |= tb_body_is_awake(box[i]);
+    asleep += !tb_body_is_awake(box[i]);
+  }
+  if (spin != 0.0f) ck_assert_msg(asleep == 0 && tb_body_is_awake(wheel), "%d of 30 boxes asleep beside a spinning wheel", asleep);
+  tb_destroy_world(w);
+  return !any_awake;
+}
+
+START_TEST(one_moving_body_keeps_its_island_awake) {
+  ck_assert(!chain_with_wheel_sleeps(5.0f));
+  ck_assert(chain_with_wheel_sleeps(0.0f));
+}
+END_TEST
+
 START_TEST(moving_kinematic_keeps_box_awake) {
   tb_world_id w = world_with_ground();
   tb_body_id platform = box_at(w, TB_KINEMATIC_BODY, (tb_vec2){0.0f, 3.0f}, 10.0f, 0.5f, 0.0f);
@@ -432,6 +484,7 @@ static Suite* sleep_suite(void) {
   tcase_add_test(tc, world_sleep_switch);
   tcase_add_test(tc, created_asleep_until_touched);
   tcase_add_test(tc, moving_kinematic_keeps_box_awake);
+  tcase_add_test(tc, one_moving_body_keeps_its_island_awake);
   suite_add_tcase(s, tc);
   return s;
 }
