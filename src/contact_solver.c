@@ -130,6 +130,14 @@ typedef struct tb_contact_constraint {
 typedef struct tb_deep_contact {
   int32_t block, lane;
   float impulse[2];
+  /* the lane's terms the push-out reads, copied out of its block at the
+   * start of each push-out (its 16 sweeps then stream through these instead
+   * of a dozen cache lines of the block per contact and sweep) */
+  int32_t a, b, two; /* solver bodies; two: both points solved together (block > 0) */
+  float nx, ny, ma, ja, mb, jb;
+  float k11, k12, k22, n11, n12, n22;
+  float rax[2], ray[2], rbx[2], rby[2]; /* step start anchors */
+  float base_separation[2], push_depth[2], normal_mass[2];
 } tb_deep_contact;
 
 /* ---- scratch --------------------------------------------------------------- */
@@ -432,7 +440,7 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
         continue;
       if (!tb_array_reserve(&w->deep_contacts, &w->deep_capacity, w->deep_count + 1, sizeof(tb_deep_contact)))
         return false;
-      ((tb_deep_contact*)w->deep_contacts)[w->deep_count++] = (tb_deep_contact){b, lane, {0.0f, 0.0f}};
+      ((tb_deep_contact*)w->deep_contacts)[w->deep_count++] = (tb_deep_contact){.block = b, .lane = lane};
     }
   if (!tb_array_reserve((void**)&w->push_velocities, &w->push_capacity, 3 * bodies, sizeof(float))) return false;
   ctx->push_velocities = w->push_velocities;
@@ -788,6 +796,35 @@ static float push_speed(const float* ua, const float* ub, tb_vec2 ra, tb_vec2 rb
  * the share TB_PUSH_OUT_RATE of the depth beyond the push depth per substep,
  * at most contact_push_max_velocity apart, with impulses >= 0 (Gauss-Seidel,
  * accumulated over the sweeps of one substep). */
+/* Copies what the push-out reads of a deep contact's lane out of its block. */
+static void load_deep(tb_deep_contact* d, const tb_wide_contact* c) {
+  int lane = d->lane;
+  d->a = c->a[lane];
+  d->b = c->b[lane];
+  d->two = c->block[lane] > 0.0f;
+  d->nx = c->nx[lane];
+  d->ny = c->ny[lane];
+  d->ma = c->ma[lane];
+  d->ja = c->ja[lane];
+  d->mb = c->mb[lane];
+  d->jb = c->jb[lane];
+  d->k11 = c->k11[lane];
+  d->k12 = c->k12[lane];
+  d->k22 = c->k22[lane];
+  d->n11 = c->n11[lane];
+  d->n12 = c->n12[lane];
+  d->n22 = c->n22[lane];
+  for (int p = 0; p < 2; ++p) {
+    d->rax[p] = c->q[p].rax[lane];
+    d->ray[p] = c->q[p].ray[lane];
+    d->rbx[p] = c->q[p].rbx[lane];
+    d->rby[p] = c->q[p].rby[lane];
+    d->base_separation[p] = c->q[p].base_separation[lane];
+    d->push_depth[p] = c->p[p].push_depth[lane];
+    d->normal_mass[p] = c->p[p].normal_mass[lane];
+  }
+}
+
 void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
   if (!ctx->push_velocities) return;
   float* u = ctx->push_velocities;
@@ -796,36 +833,36 @@ void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
   const tb_wide_contact* wide = (const tb_wide_contact*)w->wide;
   const tb_solver_body* states = ctx->states;
   float push = ctx->contact_push_max_velocity, rate = TB_PUSH_OUT_RATE * ctx->inv_h;
-  for (int i = 0; i < w->deep_count; ++i) deep[i].impulse[0] = deep[i].impulse[1] = 0.0f;
+  for (int i = 0; i < w->deep_count; ++i) {
+    load_deep(&deep[i], &wide[deep[i].block]); /* the base separations move with the slides */
+    deep[i].impulse[0] = deep[i].impulse[1] = 0.0f;
+  }
   for (int sweep = 0; sweep < TB_PUSH_OUT_SWEEPS; ++sweep)
     for (int i = 0; i < w->deep_count; ++i) {
-      const tb_wide_contact* c = &wide[deep[i].block];
-      int lane = deep[i].lane, a = c->a[lane], b = c->b[lane];
+      tb_deep_contact* d = &deep[i];
+      int a = d->a, b = d->b;
       const tb_solver_body *sa = &states[a], *sb = &states[b];
       float *ua = &u[3 * a], *ub = &u[3 * b];
-      tb_vec2 n = {c->nx[lane], c->ny[lane]}, ra[2], rb[2];
-      float r[2], k[2][2] = {{c->k11[lane], c->k12[lane]}, {c->k12[lane], c->k22[lane]}};
-      float* acc = deep[i].impulse;
+      tb_vec2 n = {d->nx, d->ny}, ra[2], rb[2];
+      float r[2], k[2][2] = {{d->k11, d->k12}, {d->k12, d->k22}};
+      float* acc = d->impulse;
       /* r = (push speed without this contact's impulses) - target; an inert
        * second point (no mass) gets r = 0 and never moves */
       for (int p = 0; p < 2; ++p) {
-        const tb_wide_point* cp = &c->p[p];
-        const tb_wide_anchor* cq = &c->q[p];
-        ra[p] = (tb_vec2){cq->rax[lane], cq->ray[lane]};
-        rb[p] = (tb_vec2){cq->rbx[lane], cq->rby[lane]};
+        ra[p] = (tb_vec2){d->rax[p], d->ray[p]};
+        rb[p] = (tb_vec2){d->rbx[p], d->rby[p]};
         /* the separation now, to first order in the angles (as normal_target) */
         tb_vec2 moved = tb_sub(tb_add(sb->dp, tb_cross_sv(sb->da, rb[p])), tb_add(sa->dp, tb_cross_sv(sa->da, ra[p])));
-        float s = cq->base_separation[lane] + tb_dot(moved, n);
-        float target = fminf(rate * fmaxf(-cp->push_depth[lane] - s, 0.0f), push);
-        r[p] = cp->normal_mass[lane] > 0.0f ? push_speed(ua, ub, ra[p], rb[p], n) - target : 0.0f;
+        float s = d->base_separation[p] + tb_dot(moved, n);
+        float target = fminf(rate * fmaxf(-d->push_depth[p] - s, 0.0f), push);
+        r[p] = d->normal_mass[p] > 0.0f ? push_speed(ua, ub, ra[p], rb[p], n) - target : 0.0f;
       }
       r[0] -= k[0][0] * acc[0] + k[0][1] * acc[1];
       r[1] -= k[1][0] * acc[0] + k[1][1] * acc[1];
       /* the mixed LCP x >= 0, K x + r >= 0, complementary, as solve_wide */
       float x[2] = {0.0f, 0.0f};
-      if (c->block[lane] > 0.0f) {
-        float both0 = -(c->n11[lane] * r[0] + c->n12[lane] * r[1]),
-              both1 = -(c->n12[lane] * r[0] + c->n22[lane] * r[1]);
+      if (d->two) {
+        float both0 = -(d->n11 * r[0] + d->n12 * r[1]), both1 = -(d->n12 * r[0] + d->n22 * r[1]);
         float only0 = -r[0] / k[0][0], only1 = -r[1] / k[1][1];
         if (both0 >= 0.0f && both1 >= 0.0f) {
           x[0] = both0;
@@ -837,12 +874,12 @@ void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
         }
       } else { /* one point, or two too close together: one after the other */
         for (int p = 0; p < 2; ++p) {
-          if (!(c->p[p].normal_mass[lane] > 0.0f)) continue;
+          if (!(d->normal_mass[p] > 0.0f)) continue;
           float rp = r[p] + (p == 1 ? k[1][0] * x[0] : 0.0f);
-          x[p] = fmaxf(-c->p[p].normal_mass[lane] * rp, 0.0f);
+          x[p] = fmaxf(-d->normal_mass[p] * rp, 0.0f);
         }
       }
-      float ma = c->ma[lane], ja = c->ja[lane], mb = c->mb[lane], jb = c->jb[lane];
+      float ma = d->ma, ja = d->ja, mb = d->mb, jb = d->jb;
       for (int p = 0; p < 2; ++p) {
         tb_vec2 P = tb_scale(x[p] - acc[p], n);
         acc[p] = x[p];

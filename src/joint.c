@@ -242,11 +242,11 @@ static void distance_warm_start(tb_joint* j, tb_solver_body* a, tb_solver_body* 
 
 static void revolute_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_body* a, tb_solver_body* b,
                            bool use_bias) {
-  frame f = current_frame(j, a, b);
+  float angle = j->delta_angle + (b->da - a->da); /* current_frame's angle; the arms only for the point */
   float k_angular = a->inv_inertia + b->inv_inertia;
   float angular_mass = inv_or_zero(k_angular);
   if (j->enable_spring && j->hertz > 0.0f) {
-    float impulse = soft_impulse(angular_mass, j->spring_softness, b->w - a->w, f.angle, j->spring_impulse);
+    float impulse = soft_impulse(angular_mass, j->spring_softness, b->w - a->w, angle, j->spring_impulse);
     j->spring_impulse += impulse;
     apply_angular(a, b, impulse);
   }
@@ -255,14 +255,17 @@ static void revolute_solve(tb_joint* j, const tb_step_context* ctx, tb_solver_bo
     apply_angular(a, b, clamp_accumulate(&j->motor_impulse, impulse, j->max_motor * ctx->h));
   }
   if (j->enable_limit) {
-    float c = f.angle - j->lower;
+    float c = angle - j->lower;
     float impulse = limit_impulse(angular_mass, limit_part(ctx, use_bias, c), b->w - a->w, c, &j->lower_impulse);
     apply_angular(a, b, impulse);
-    c = j->upper - f.angle;
+    c = j->upper - angle;
     impulse = limit_impulse(angular_mass, limit_part(ctx, use_bias, c), a->w - b->w, c, &j->upper_impulse);
     apply_angular(a, b, -impulse);
   }
-  if (!j->in_tree) solve_point(j, a, b, &f, rigid_part(ctx, use_bias));
+  if (!j->in_tree) {
+    frame f = current_frame(j, a, b);
+    solve_point(j, a, b, &f, rigid_part(ctx, use_bias));
+  }
 }
 
 static float revolute_axial(const tb_joint* j) {
