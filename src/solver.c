@@ -348,7 +348,6 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     tb_joint_tree_solve(w, &ctx, true);
     tb_contact_solver_push_out(w, &ctx);
     integrate_positions(w, &ctx, motions);
-    tb_contact_solver_update_arms(w, &ctx);
     ctx.bodies_moved = true;
     ctx.position_updates += 1;
     float change = relax_pass(w, &ctx, sub, 0);

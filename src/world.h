@@ -168,9 +168,6 @@ float tb_contact_solver_solve(tb_world* w, struct tb_step_context* ctx, bool use
  * velocities (ctx->push_velocities, NULL when no point is deep) that move the
  * bodies in the next position update and are then dropped. */
 void tb_contact_solver_push_out(tb_world* w, struct tb_step_context* ctx);
-/* After each position update: the points' arms to their common points and
- * the effective masses there. */
-void tb_contact_solver_update_arms(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_finish(tb_world* w, struct tb_step_context* ctx);
 /* Continuous collision (continuous.c): fast bodies and bullets stop at their
  * first time of impact. Returns the number of bodies swept. */
