@@ -139,6 +139,7 @@ typedef struct tb_deep_contact {
   float rax[2], ray[2], rbx[2], rby[2]; /* step start anchors */
   float base_separation[2], push_depth[2], normal_mass[2];
 } tb_deep_contact;
+_Static_assert(sizeof(tb_deep_contact) == 132, "the stress pile-up's memory budget counts 132 B (tests/stress/pileup.c)");
 
 /* ---- scratch --------------------------------------------------------------- */
 
