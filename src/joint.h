@@ -64,7 +64,7 @@ typedef struct tb_joint {
 typedef struct tb_step_joint {
   int32_t solver_a, solver_b;
   int8_t rigid_rows; /* tb_joint_rigid_row_count, 0 for a skipped joint */
-  bool point_only;   /* joint_wide.c may take it (tb_wide_joint_fits), unless it is in a tree */
+  bool wide;         /* joint_wide.c takes it (tb_wide_joint_fits) */
   bool in_tree;      /* set by tb_joint_tree_build */
 } tb_step_joint;
 

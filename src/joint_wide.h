@@ -1,8 +1,8 @@
-/* Point joints solved four at a time: the revolute joints that are nothing
- * but their point (no spring, motor or limit, not in a joint tree), such as
- * the joints of a grid or of chains with loops, coloured so that no two of a
- * colour share a moving body and packed into blocks of four lanes (wide.h).
- * Every other joint is solved one at a time (joint.c). See joint_wide.c. */
+/* Revolute joints solved four at a time: coloured so that no two of a
+ * colour share a moving body and packed into blocks of four lanes (wide.h),
+ * their point (unless a joint tree solves it, joint_tree.c) and their angle
+ * rows (spring, motor, limits). Every other joint is solved one at a time
+ * (joint.c). See joint_wide.c. */
 #ifndef TB_JOINT_WIDE_H
 #define TB_JOINT_WIDE_H
 
@@ -12,19 +12,21 @@
 #include "solver.h"
 
 struct tb_wide_joint;
+struct tb_wide_angles;
 
 /* Step scratch, grown as needed and kept by the world. */
 typedef struct tb_wide_joints {
   struct tb_wide_joint* blocks;
   int block_count, block_capacity;
+  struct tb_wide_angles* angles; /* beside the blocks: their angle rows */
+  int angle_capacity;
 } tb_wide_joints;
 
 struct tb_world;
 struct tb_joint;
 
-/* Whether a prepared joint is one the wide joints can take, once it is known
- * not to be in a joint tree: a revolute joint with nothing but its point, its
- * bodies' masses within the bounds of joint_wide.c. */
+/* Whether a prepared joint is one the wide joints take: a revolute joint
+ * that is not skipped, its bodies' masses within the bounds of joint_wide.c. */
 bool tb_wide_joint_fits(const struct tb_joint* j, const tb_step_context* ctx);
 void tb_wide_joints_free(tb_wide_joints* wj);
 size_t tb_wide_joints_bytes(const tb_wide_joints* wj);

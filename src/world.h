@@ -85,6 +85,7 @@ typedef struct tb_world {
   struct tb_step_joint* step_joint_info; /* per step joint, in step order (joint.h) */
   int step_joint_info_capacity;
   int scalar_joint_count; /* the first ones of step_joints, solved one at a time; the rest in wide_joints */
+  bool joints_one_at_a_time; /* tests' reference: joint_wide.c takes no joint (not in the public API) */
   tb_joint_tree joint_tree;
   tb_wide_joints wide_joints;
   int* scratch; /* island search stack and marks */
