@@ -825,10 +825,10 @@ static inline int bin_of(float c, float lo, float scale) {
   return k < 0 ? 0 : (k >= TB_TREE_BINS ? TB_TREE_BINS - 1 : k);
 }
 
-/* Splits units[begin, end) (two or more) in two non-empty parts; returns the
- * first index of the second part. */
-static int32_t split_units(tb_tree_build_unit* units, int32_t begin, int32_t end) {
-  float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+/* The bounds of units[begin, end)'s centres (twice the centres) per axis. */
+static void centre_bounds(const tb_tree_build_unit* units, int32_t begin, int32_t end, float lo[2], float hi[2]) {
+  lo[0] = lo[1] = INFINITY;
+  hi[0] = hi[1] = -INFINITY;
   for (int32_t k = begin; k < end; ++k) {
     for (int axis = 0; axis < 2; ++axis) {
       float c = centroid_axis(&units[k], axis);
@@ -836,6 +836,13 @@ static int32_t split_units(tb_tree_build_unit* units, int32_t begin, int32_t end
       if (c > hi[axis]) hi[axis] = c;
     }
   }
+}
+
+/* Splits units[begin, end) (two or more) in two non-empty parts; returns the
+ * first index of the second part. */
+static int32_t split_units(tb_tree_build_unit* units, int32_t begin, int32_t end) {
+  float lo[2], hi[2];
+  centre_bounds(units, begin, end, lo, hi);
   int axis = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
   float extent = hi[axis] - lo[axis];
   if (!(extent >= FLT_MIN)) return begin + (end - begin) / 2; /* all centres (nearly) equal */
@@ -890,14 +897,8 @@ static int32_t split_units(tb_tree_build_unit* units, int32_t begin, int32_t end
  * two passes over the units against split_units' three with bins, for a
  * tree a little less tight. Returns the first index of the second part. */
 static int32_t split_units_mid(tb_tree_build_unit* units, int32_t begin, int32_t end) {
-  float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  for (int32_t k = begin; k < end; ++k) {
-    for (int axis = 0; axis < 2; ++axis) {
-      float c = centroid_axis(&units[k], axis);
-      if (c < lo[axis]) lo[axis] = c;
-      if (c > hi[axis]) hi[axis] = c;
-    }
-  }
+  float lo[2], hi[2];
+  centre_bounds(units, begin, end, lo, hi);
   int axis = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
   float middle = 0.5f * (lo[axis] + hi[axis]);
   int32_t i = begin, j = end - 1;
