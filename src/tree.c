@@ -825,6 +825,12 @@ static inline int bin_of(float c, float lo, float scale) {
   return k < 0 ? 0 : (k >= TB_TREE_BINS ? TB_TREE_BINS - 1 : k);
 }
 
+static inline void swap_units(tb_tree_build_unit* units, int32_t i, int32_t j) {
+  tb_tree_build_unit tmp = units[i];
+  units[i] = units[j];
+  units[j] = tmp;
+}
+
 /* The bounds of units[begin, end)'s centres (twice the centres) per axis. */
 static void centre_bounds(const tb_tree_build_unit* units, int32_t begin, int32_t end, float lo[2], float hi[2]) {
   lo[0] = lo[1] = INFINITY;
@@ -882,9 +888,7 @@ static int32_t split_units(tb_tree_build_unit* units, int32_t begin, int32_t end
     if (bin_of(centroid_axis(&units[i], axis), lo[axis], scale) <= best_split) {
       ++i;
     } else {
-      tb_tree_build_unit tmp = units[i];
-      units[i] = units[j];
-      units[j] = tmp;
+      swap_units(units, i, j);
       --j;
     }
   }
@@ -906,9 +910,7 @@ static int32_t split_units_mid(tb_tree_build_unit* units, int32_t begin, int32_t
     if (centroid_axis(&units[i], axis) < middle) {
       ++i;
     } else {
-      tb_tree_build_unit tmp = units[i];
-      units[i] = units[j];
-      units[j] = tmp;
+      swap_units(units, i, j);
       --j;
     }
   }

@@ -14,16 +14,7 @@
 #define SUBSTEPS 4
 
 /* Set TB_JOINT_VERBOSE=1 to print the measured figures. */
-static void report(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-static void report(const char* fmt, ...) {
-  const char* env = getenv("TB_JOINT_VERBOSE");
-  if (env == NULL || env[0] != '1') return;
-  va_list args;
-  va_start(args, fmt);
-  vfprintf(stderr, fmt, args);
-  va_end(args);
-  fputc('\n', stderr);
-}
+#define report(...) tbt_report("TB_JOINT_VERBOSE", __VA_ARGS__)
 
 static tb_body_id static_body(tb_world_id w, tb_vec2 pos) {
   tb_body_def bd = tb_default_body_def();

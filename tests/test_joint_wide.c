@@ -16,16 +16,7 @@
 #define SUBSTEPS 4
 
 /* Set TB_JOINT_VERBOSE=1 to print the measured figures. */
-static void report(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-static void report(const char* fmt, ...) {
-  const char* env = getenv("TB_JOINT_VERBOSE");
-  if (env == NULL || env[0] != '1') return;
-  va_list args;
-  va_start(args, fmt);
-  vfprintf(stderr, fmt, args);
-  va_end(args);
-  fputc('\n', stderr);
-}
+#define report(...) tbt_report("TB_JOINT_VERBOSE", __VA_ARGS__)
 
 static void step(tb_world_id w, int n) {
   for (int i = 0; i < n; ++i) ck_assert_int_eq(tb_world_step(w, DT, SUBSTEPS), TB_OK);

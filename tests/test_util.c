@@ -1,3 +1,7 @@
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+
 #include "test_util.h"
 
 tb_world_id tbt_world(float gx, float gy) {
@@ -27,4 +31,14 @@ float tbt_rand(unsigned* state, float lo, float hi) {
   x ^= x << 5;
   *state = x;
   return lo + (hi - lo) * (float)((double)x / 4294967296.0);
+}
+
+void tbt_report(const char* env, const char* fmt, ...) {
+  const char* on = getenv(env);
+  if (on == NULL || on[0] != '1') return;
+  va_list args;
+  va_start(args, fmt);
+  vfprintf(stderr, fmt, args);
+  va_end(args);
+  fputc('\n', stderr);
 }

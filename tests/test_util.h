@@ -31,6 +31,9 @@ tb_body_id tbt_box_body(tb_world_id w, float x, float y, float hx, float hy);
 /* Deterministic random numbers for tests (xorshift), uniform in [lo, hi]: float
  * rounding can return hi itself, so do not cast to an index without clamping. */
 float tbt_rand(unsigned* state, float lo, float hi);
+/* Prints one line of measured figures to stderr when the environment
+ * variable env is set to 1 (e.g. TB_JOINT_VERBOSE=1). */
+void tbt_report(const char* env, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #define TB_TEST_MAIN(suite_fn)                \
   int main(void) {                            \
