@@ -495,15 +495,14 @@ static void set_row(tb_rigid_rows* out, tb_vec2 n, float arm_a, float arm_b, flo
 }
 
 static void set_point_rows(tb_rigid_rows* out, const frame* f, tb_vec2* impulse) {
+  out->point = out->count;
   set_row(out, (tb_vec2){1.0f, 0.0f}, -f->ra.y, -f->rb.y, f->d.x, &impulse->x);
   set_row(out, (tb_vec2){0.0f, 1.0f}, f->ra.x, f->rb.x, f->d.y, &impulse->y);
-  out->twist_a = -tb_dot(f->ra, *impulse); /* -p acts on A */
-  out->twist_b = tb_dot(f->rb, *impulse);
 }
 
 void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out) {
   out->count = 0;
-  out->twist_a = out->twist_b = 0.0f;
+  out->point = -1;
   frame f = current_frame(j, a, b);
   const tb_vec2 zero = {0.0f, 0.0f};
   switch (j->type) {

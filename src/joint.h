@@ -92,10 +92,7 @@ typedef struct tb_rigid_rows {
   float ja[3][3], jb[3][3];
   float c[3];
   float* impulse[3];
-  /* r . p of the point rows' accumulated impulse p on each body (arm r): how
-   * strongly that impulse turns the body back when it rotates (the geometric
-   * stiffness times h, see joint_tree.c). */
-  float twist_a, twist_b;
+  int point; /* the first of the point's two rows (x, then y), -1 without a point */
 } tb_rigid_rows;
 /* How many rigid rows the joint has (0: none, e.g. a mouse or motor joint). */
 int tb_joint_rigid_row_count(const tb_joint* j);

@@ -84,11 +84,16 @@ typedef struct tb_jt_node {
   int a, b;        /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
   int sa, sb;      /* joint: the solver bodies of A and B (the passes read them without the joint) */
   double d[3][3];  /* D, then D^-1 */
-  double hp[3][3]; /* H_{i,parent}: dof x the parent's dof */
-  double gk[3][3]; /* joint: the compliance G = g K_c */
+  float hp[3][3];  /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
+  double kc[3][3]; /* joint: K_c, the row block's own effective-mass inverse (G = g K_c) */
   double stiff;    /* body: the geometric stiffness added to its inertia */
   double y[3];     /* right-hand side, then the solution */
   tb_rigid_rows rows;
+  /* joint: the rows' accumulated impulses (*rows.impulse[r]), kept here while
+   * the substep's passes add to them: the joint records are scattered, and
+   * reading them in every pass missed the cache. Loaded by the biased
+   * factorisation, written back by tb_joint_tree_store. */
+  float acc[3];
 } tb_jt_node;
 
 void tb_joint_tree_free(tb_joint_tree* t) {
@@ -145,7 +150,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges) ||
       !tb_array_reserve((void**)&t->components, &t->component_capacity, bodies + joints + 1, sizeof *t->components))
     return false;
-  t->factored_for = -1;
+  t->factored_for = t->rows_for = -1;
   float hw = TB_TREE_H_OMEGA;
   t->softness = tb_make_softness(hw * ctx->inv_h / TB_TWO_PI_F, w->joint_damping_ratio, ctx->h);
 
@@ -295,7 +300,7 @@ static void invert(double m[3][3], int n) {
 
 /* A row block's Jacobian on one of its bodies, as a k x 3 block with the sign
  * of H: +ja on body A, -jb on body B (see the file comment). */
-static void joint_block(const tb_jt_node* joint, bool side_a, double out[3][3]) {
+static void joint_block(const tb_jt_node* joint, bool side_a, float out[3][3]) {
   for (int r = 0; r < joint->dof; ++r)
     for (int c = 0; c < 3; ++c) out[r][c] = side_a ? joint->rows.ja[r][c] : -joint->rows.jb[r][c];
 }
@@ -362,29 +367,49 @@ static inline __attribute__((always_inline)) void back(int nd, int pd, tb_jt_nod
 
 /* ---- the solve -------------------------------------------------------------- */
 
-/* A joint's rows at the current positions, its block of D (-G) and G itself. */
-static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double g) {
-  tb_joint* j = tb_joint_at(w, n->ref);
-  const tb_solver_body* a = &ctx->states[n->sa];
-  const tb_solver_body* b = &ctx->states[n->sb];
-  tb_joint_rigid_rows(j, a, b, &n->rows);
-  memset(n->d, 0, sizeof n->d);
+/* A joint's block of D, -G = -g K_c, at the current positions. Its rows and
+ * K_c depend on the positions only: computed when `fresh` (the first
+ * factorisation after a position update, the relax one), read again by the
+ * biased one of the next substep. `load`: the accumulated impulses are read
+ * from the joint (the biased factorisation, after tb_joint_tree_store). */
+static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double g, bool fresh, bool load) {
   int k = n->dof;
-  double ma[3][3], mb[3][3]; /* M^-1 J^T columns of each row */
-  for (int r = 0; r < k; ++r) {
-    inv_mass_times(a, n->rows.ja[r], ma[r]);
-    inv_mass_times(b, n->rows.jb[r], mb[r]);
-  }
-  for (int r = 0; r < k; ++r) {
-    const float* ja = n->rows.ja[r];
-    const float* jb = n->rows.jb[r];
-    for (int s = 0; s < k; ++s) {
-      double kc = 0.0;
-      for (int c = 0; c < 3; ++c) kc += ja[c] * ma[s][c] + jb[c] * mb[s][c];
-      n->d[r][s] = -g * kc;
-      n->gk[r][s] = g * kc;
+  if (fresh) {
+    tb_joint* j = tb_joint_at(w, n->ref);
+    const tb_solver_body* a = &ctx->states[n->sa];
+    const tb_solver_body* b = &ctx->states[n->sb];
+    tb_joint_rigid_rows(j, a, b, &n->rows);
+    double ma[3][3], mb[3][3]; /* M^-1 J^T columns of each row */
+    for (int r = 0; r < k; ++r) {
+      inv_mass_times(a, n->rows.ja[r], ma[r]);
+      inv_mass_times(b, n->rows.jb[r], mb[r]);
+    }
+    for (int r = 0; r < k; ++r) {
+      const float* ja = n->rows.ja[r];
+      const float* jb = n->rows.jb[r];
+      for (int s = 0; s < k; ++s) {
+        double kc = 0.0;
+        for (int c = 0; c < 3; ++c) kc += ja[c] * ma[s][c] + jb[c] * mb[s][c];
+        n->kc[r][s] = kc;
+      }
     }
   }
+  if (load)
+    for (int r = 0; r < k; ++r) n->acc[r] = *n->rows.impulse[r];
+  memset(n->d, 0, sizeof n->d);
+  for (int r = 0; r < k; ++r)
+    for (int s = 0; s < k; ++s) n->d[r][s] = -g * n->kc[r][s];
+}
+
+/* h k of a joint's point rows on the side of body A or B (the file comment):
+ * r . p, the arm r read back from the rows (the x row's arm is -r.y, the y
+ * row's r.x), p the point's accumulated impulse (-p acts on A). */
+static double point_twist(const tb_jt_node* joint, bool side_a) {
+  int r = joint->rows.point;
+  if (r < 0) return 0.0;
+  tb_vec2 p = {joint->acc[r], joint->acc[r + 1]};
+  if (side_a) return -tb_dot((tb_vec2){joint->rows.ja[r + 1][2], -joint->rows.ja[r][2]}, p);
+  return tb_dot((tb_vec2){joint->rows.jb[r + 1][2], -joint->rows.jb[r][2]}, p);
 }
 
 /* The factorisation of the system at the current positions: every block and
@@ -394,32 +419,38 @@ static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double 
 static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   double g = use_bias ? (double)t->softness.impulse_scale / (double)t->softness.mass_scale : TB_TREE_RELAX_COMPLIANCE;
+  bool fresh = t->rows_for != ctx->position_updates;
+  t->rows_for = ctx->position_updates;
+  t->compliance = g;
   for (int i = 0; i < t->node_count; ++i)
-    if (!t->nodes[i].body) init_joint(w, ctx, &t->nodes[i], g);
+    if (!t->nodes[i].body) init_joint(w, ctx, &t->nodes[i], g, fresh, use_bias);
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
     if (!n->body) continue;
     const tb_solver_body* s = &ctx->states[n->ref];
-    double twist = 0.0; /* h k (the rows' r . p) */
-    for (int e = 0; e < n->count; ++e) {
-      const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
-      twist += joint->a == i ? joint->rows.twist_a : joint->rows.twist_b;
-    }
     /* geometric stiffness beyond the inertia (file comment) */
-    n->stiff = use_bias ? fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0) : 0.0;
+    n->stiff = 0.0;
+    if (use_bias) {
+      double twist = 0.0; /* h k (the rows' r . p) */
+      for (int e = 0; e < n->count; ++e) {
+        const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
+        twist += point_twist(joint, joint->a == i);
+      }
+      n->stiff = fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0);
+    }
     memset(n->d, 0, sizeof n->d);
     n->d[0][0] = n->d[1][1] = 1.0 / (double)s->inv_mass;
     n->d[2][2] = 1.0 / (double)s->inv_inertia + n->stiff;
   }
-  /* H_{i,parent} of every child */
-  for (int i = 0; i < t->node_count; ++i) {
+  /* H_{i,parent} of every child (from the rows: new when they are) */
+  for (int i = 0; i < t->node_count && fresh; ++i) {
     tb_jt_node* n = &t->nodes[i];
     if (n->parent < 0) continue;
     if (!n->body) {
       joint_block(n, n->a == n->parent, n->hp);
     } else {
       const tb_jt_node* joint = &t->nodes[n->parent];
-      double block[3][3];
+      float block[3][3];
       joint_block(joint, joint->a == i, block);
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < joint->dof; ++c) n->hp[r][c] = block[c][r];
@@ -448,7 +479,7 @@ static void node_rhs(tb_world* w, tb_step_context* ctx, int i, double bias) {
       double cdot = (double)jb[0] * b->v.x + (double)jb[1] * b->v.y + (double)jb[2] * b->w -
                     ((double)ja[0] * a->v.x + (double)ja[1] * a->v.y + (double)ja[2] * a->w);
       double compliant = 0.0;
-      for (int s = 0; s < n->dof; ++s) compliant += n->gk[r][s] * (double)*n->rows.impulse[s];
+      for (int s = 0; s < n->dof; ++s) compliant += t->compliance * n->kc[r][s] * (double)n->acc[s];
       double correction = bias * (double)n->rows.c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
       correction = correction > most ? most : correction < -most ? -most : correction;
       n->y[r] = cdot + correction + compliant;
@@ -463,8 +494,7 @@ static void node_rhs(tb_world* w, tb_step_context* ctx, int i, double bias) {
     const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
     bool side_a = joint->a == i;
     for (int r = 0; r < joint->dof; ++r)
-      torque += side_a ? -(double)joint->rows.ja[r][2] * *joint->rows.impulse[r]
-                       : (double)joint->rows.jb[r][2] * *joint->rows.impulse[r];
+      torque += side_a ? -(double)joint->rows.ja[r][2] * joint->acc[r] : (double)joint->rows.jb[r][2] * joint->acc[r];
   }
   n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
 }
@@ -502,9 +532,9 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
   }
   /* the velocity changes of the bodies and the impulses of the rows */
   for (int q = from; q < to; ++q) {
-    const tb_jt_node* n = &t->nodes[q];
+    tb_jt_node* n = &t->nodes[q];
     if (!n->body) {
-      for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] += (float)n->y[r];
+      for (int r = 0; r < n->dof; ++r) n->acc[r] += (float)n->y[r];
       continue;
     }
     tb_solver_body* s = &ctx->states[n->ref];
@@ -524,6 +554,15 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   for (int k = 0; k < t->component_count; ++k) {
     int from = t->components[k], to = t->components[k + 1];
     if (use_bias || tree_active(ctx, t, from, to)) substitute(w, ctx, from, to, use_bias);
+  }
+}
+
+void tb_joint_tree_store(tb_world* w) {
+  tb_joint_tree* t = &w->joint_tree;
+  for (int i = 0; i < t->node_count; ++i) {
+    const tb_jt_node* n = &t->nodes[i];
+    if (!n->body)
+      for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] = n->acc[r];
   }
 }
 

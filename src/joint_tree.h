@@ -29,6 +29,8 @@ typedef struct tb_joint_tree {
   int component_count, component_capacity;
   tb_softness softness; /* of the biased pass */
   int factored_for;     /* the relax passes' factorisation is of this position update (-1: none) */
+  int rows_for;         /* the joint nodes' rows and K_c are of this position update (-1: none) */
+  double compliance;    /* g of the current factorisation (G = g K_c) */
 } tb_joint_tree;
 
 struct tb_world;
@@ -44,5 +46,8 @@ bool tb_joint_tree_build(struct tb_world* w, const tb_step_context* ctx);
 /* One exact solve of every tree's rigid rows at the current positions and
  * velocities, with the biased softness or (use_bias false) rigid. */
 void tb_joint_tree_solve(struct tb_world* w, tb_step_context* ctx, bool use_bias);
+/* Writes the rows' impulses back to the joints: after each substep's passes,
+ * before anything else reads them (the next warm start, tb_joint_store). */
+void tb_joint_tree_store(struct tb_world* w);
 
 #endif

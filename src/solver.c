@@ -353,6 +353,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     float change = relax_pass(w, &ctx, sub, 0);
     for (int pass = 1; pass < w->relax_iterations && change > TB_RELAX_TOLERANCE; ++pass)
       change = relax_pass(w, &ctx, sub, pass);
+    tb_joint_tree_store(w);
   }
   tb_contact_solver_finish(w, &ctx);
   tb_wide_joints_store(w, &ctx);
