@@ -124,22 +124,28 @@ typedef struct tb_contact_constraint {
   int bouncing;
 } tb_contact_constraint;
 
-/* A contact with a point deeper than its push depth (less half
- * TB_DEEP_OVERLAP) at the step start: where it is in the wide contacts, and
- * its points' push-out impulses in the current substep. */
-typedef struct tb_deep_contact {
-  int32_t block, lane;
-  float impulse[2];
-  /* the lane's terms the push-out reads, copied out of its block at the
-   * start of each push-out (its 16 sweeps then stream through these instead
-   * of a dozen cache lines of the block per contact and sweep) */
-  int32_t a, b, two; /* solver bodies; two: both points solved together (block > 0) */
-  float nx, ny, ma, ja, mb, jb;
-  float k11, k12, k22, n11, n12, n22;
-  float rax[2], ray[2], rbx[2], rby[2]; /* step start anchors */
-  float base_separation[2], push_depth[2], normal_mass[2];
-} tb_deep_contact;
-_Static_assert(sizeof(tb_deep_contact) == 132, "the stress pile-up's memory budget counts 132 B (tests/stress/pileup.c)");
+/* Up to four contacts with a point deeper than its push depth (less half
+ * TB_DEEP_OVERLAP) at the step start, which share no body but the static
+ * dummy: where each lane's contact is in the wide contacts, its points'
+ * push-out impulses in the current substep, and the lane's terms the
+ * push-out reads, copied out of its block at the start of each push-out (its
+ * 16 sweeps then stream through these instead of a dozen cache lines of the
+ * block per contact and sweep). The deep contacts are grouped in the order
+ * they are found, a group closed when the next contact shares a body with
+ * one in it: the group's lanes are then solved at once, which gives what
+ * solving them one after the other in that order gives. An unused lane has
+ * the static dummy on both sides and no mass. */
+typedef struct tb_deep_block {
+  int32_t block[4], lane[4];
+  int32_t a[4], b[4];           /* solver bodies */
+  tb_i4 two;                    /* both points solved together (block > 0) */
+  tb_f4 impulse[2];
+  tb_f4 nx, ny, ma, ja, mb, jb;
+  tb_f4 k11, k12, k22, n11, n12, n22;
+  tb_f4 rax[2], ray[2], rbx[2], rby[2]; /* step start anchors */
+  tb_f4 base_separation[2], push_depth[2], normal_mass[2];
+} tb_deep_block;
+_Static_assert(sizeof(tb_deep_block) == 4 * 132, "the stress pile-up's memory budget counts 132 B a deep contact (tests/stress/pileup.c)");
 
 /* ---- scratch --------------------------------------------------------------- */
 
@@ -405,6 +411,35 @@ static bool lane_is_deep(const tb_wide_contact* c, int lane) {
   return deep;
 }
 
+/* Adds lane `lane` of wide block b to the deep groups (tb_deep_block). */
+static bool add_deep(tb_world* w, const tb_step_context* ctx, int b, int lane) {
+  const tb_wide_contact* c = &((const tb_wide_contact*)w->wide)[b];
+  int32_t a_body = c->a[lane], b_body = c->b[lane], stat = ctx->static_index;
+  tb_deep_block* g = w->deep_count > 0 ? &((tb_deep_block*)w->deep_contacts)[w->deep_count - 1] : NULL;
+  int used = 0;
+  if (g != NULL) {
+    while (used < 4 && g->block[used] >= 0) ++used;
+    for (int k = 0; k < used; ++k) {
+      bool shares = (a_body != stat && (a_body == g->a[k] || a_body == g->b[k])) ||
+                    (b_body != stat && (b_body == g->a[k] || b_body == g->b[k]));
+      if (shares) used = 4;
+    }
+  }
+  if (g == NULL || used == 4) {
+    if (!tb_array_reserve(&w->deep_contacts, &w->deep_capacity, w->deep_count + 1, sizeof(tb_deep_block))) return false;
+    g = &((tb_deep_block*)w->deep_contacts)[w->deep_count++];
+    memset(g, 0, sizeof *g);
+    for (int k = 0; k < 4; ++k) g->block[k] = g->lane[k] = -1, g->a[k] = g->b[k] = stat;
+    g->k11 = g->k22 = splat(1.0f); /* (an unused lane divides by them) */
+    used = 0;
+  }
+  g->block[used] = b;
+  g->lane[used] = lane;
+  g->a[used] = a_body;
+  g->b[used] = b_body;
+  return true;
+}
+
 /* The contacts the push-out solves, and room for the push velocities when
  * there are any: the deep contacts between two moving bodies, then (their
  * blocks come last, see color_constraints) every contact with a body that
@@ -439,11 +474,9 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
       /* the static dummy and kinematic bodies are never marked pushed */
       if (b < w->wide_fixed_from ? !lane_is_deep(c, lane) : !(live && (pushed[c->a[lane]] || pushed[c->b[lane]])))
         continue;
-      if (!tb_array_reserve(&w->deep_contacts, &w->deep_capacity, w->deep_count + 1, sizeof(tb_deep_contact)))
-        return false;
-      ((tb_deep_contact*)w->deep_contacts)[w->deep_count++] = (tb_deep_contact){.block = b, .lane = lane};
+      if (!add_deep(w, ctx, b, lane)) return false;
     }
-  if (!tb_array_reserve((void**)&w->push_velocities, &w->push_capacity, 3 * bodies, sizeof(float))) return false;
+  if (!tb_array_reserve((void**)&w->push_velocities, &w->push_capacity, 4 * bodies, sizeof(float))) return false;
   ctx->push_velocities = w->push_velocities;
   return true;
 }
@@ -809,11 +842,60 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
 
 /* ---- deep overlap push-out ----------------------------------------------------- */
 
+/* Copies what the push-out reads of a group's lanes out of their blocks. */
+static void load_deep(tb_deep_block* d, const tb_wide_contact* wide) {
+  for (int k = 0; k < 4 && d->block[k] >= 0; ++k) {
+    const tb_wide_contact* c = &wide[d->block[k]];
+    int lane = d->lane[k];
+    d->two[k] = c->block[lane] > 0.0f ? -1 : 0;
+    d->nx[k] = c->nx[lane];
+    d->ny[k] = c->ny[lane];
+    d->ma[k] = c->ma[lane];
+    d->ja[k] = c->ja[lane];
+    d->mb[k] = c->mb[lane];
+    d->jb[k] = c->jb[lane];
+    d->k11[k] = c->k11[lane];
+    d->k12[k] = c->k12[lane];
+    d->k22[k] = c->k22[lane];
+    d->n11[k] = c->n11[lane];
+    d->n12[k] = c->n12[lane];
+    d->n22[k] = c->n22[lane];
+    for (int p = 0; p < 2; ++p) {
+      d->rax[p][k] = c->q[p].rax[lane];
+      d->ray[p][k] = c->q[p].ray[lane];
+      d->rbx[p][k] = c->q[p].rbx[lane];
+      d->rby[p][k] = c->q[p].rby[lane];
+      d->base_separation[p][k] = c->q[p].base_separation[lane];
+      d->push_depth[p][k] = c->p[p].push_depth[lane];
+      d->normal_mass[p][k] = c->p[p].normal_mass[lane];
+    }
+  }
+}
+
+/* The push velocities (x, y, angle) of four bodies, a row of four floats each. */
+typedef struct wide_push {
+  tb_f4 x, y, w, unused;
+} wide_push;
+
+static inline wide_push gather_push(const float* u, const int32_t* idx) {
+  tb_f4 m[4];
+  for (int k = 0; k < 4; ++k) memcpy(&m[k], &u[4 * idx[k]], sizeof m[k]);
+  transpose(m);
+  return (wide_push){m[0], m[1], m[2], m[3]};
+}
+
+static inline void scatter_push(float* u, const int32_t* idx, const wide_push* p) {
+  tb_f4 m[4] = {p->x, p->y, p->w, p->unused};
+  transpose(m);
+  for (int k = 0; k < 4; ++k) memcpy(&u[4 * idx[k]], &m[k], sizeof m[k]);
+}
+
 /* The push velocity of B relative to A at a point, along n. */
-static float push_speed(const float* ua, const float* ub, tb_vec2 ra, tb_vec2 rb, tb_vec2 n) {
-  tb_vec2 du = tb_sub(tb_add((tb_vec2){ub[0], ub[1]}, tb_cross_sv(ub[2], rb)),
-                      tb_add((tb_vec2){ua[0], ua[1]}, tb_cross_sv(ua[2], ra)));
-  return tb_dot(du, n);
+static inline tb_f4 push_speed(const wide_push* ua, const wide_push* ub, tb_f4 rax, tb_f4 ray, tb_f4 rbx, tb_f4 rby,
+                               tb_f4 nx, tb_f4 ny) {
+  tb_f4 dux = (ub->x + -ub->w * rby) - (ua->x + -ua->w * ray);
+  tb_f4 duy = (ub->y + ub->w * rbx) - (ua->y + ua->w * rax);
+  return dux * nx + duy * ny;
 }
 
 /* Split impulse (Catto, GDC 2006; Bullet): each deep point is pushed apart in
@@ -824,101 +906,73 @@ static float push_speed(const float* ua, const float* ub, tb_vec2 ra, tb_vec2 rb
  * the cap) faster than the one relax sweep takes them back out. The target is
  * the share TB_PUSH_OUT_RATE of the depth beyond the push depth per substep,
  * at most contact_push_max_velocity apart, with impulses >= 0 (Gauss-Seidel,
- * accumulated over the sweeps of one substep). */
-/* Copies what the push-out reads of a deep contact's lane out of its block. */
-static void load_deep(tb_deep_contact* d, const tb_wide_contact* c) {
-  int lane = d->lane;
-  d->a = c->a[lane];
-  d->b = c->b[lane];
-  d->two = c->block[lane] > 0.0f;
-  d->nx = c->nx[lane];
-  d->ny = c->ny[lane];
-  d->ma = c->ma[lane];
-  d->ja = c->ja[lane];
-  d->mb = c->mb[lane];
-  d->jb = c->jb[lane];
-  d->k11 = c->k11[lane];
-  d->k12 = c->k12[lane];
-  d->k22 = c->k22[lane];
-  d->n11 = c->n11[lane];
-  d->n12 = c->n12[lane];
-  d->n22 = c->n22[lane];
-  for (int p = 0; p < 2; ++p) {
-    d->rax[p] = c->q[p].rax[lane];
-    d->ray[p] = c->q[p].ray[lane];
-    d->rbx[p] = c->q[p].rbx[lane];
-    d->rby[p] = c->q[p].rby[lane];
-    d->base_separation[p] = c->q[p].base_separation[lane];
-    d->push_depth[p] = c->p[p].push_depth[lane];
-    d->normal_mass[p] = c->p[p].normal_mass[lane];
-  }
-}
-
+ * accumulated over the sweeps of one substep; a group's four lanes at once). */
 void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
   if (!ctx->push_velocities) return;
   float* u = ctx->push_velocities;
-  memset(u, 0, (size_t)(3 * (ctx->static_index + 1)) * sizeof(float));
-  tb_deep_contact* deep = (tb_deep_contact*)w->deep_contacts;
+  memset(u, 0, (size_t)(4 * (ctx->static_index + 1)) * sizeof(float));
+  tb_deep_block* deep = (tb_deep_block*)w->deep_contacts;
   const tb_wide_contact* wide = (const tb_wide_contact*)w->wide;
   const tb_solver_body* states = ctx->states;
-  float push = ctx->contact_push_max_velocity, rate = TB_PUSH_OUT_RATE * ctx->inv_h;
+  const tb_f4 zero = splat(0.0f), push = splat(ctx->contact_push_max_velocity);
+  const tb_f4 rate = splat(TB_PUSH_OUT_RATE * ctx->inv_h);
   for (int i = 0; i < w->deep_count; ++i) {
-    load_deep(&deep[i], &wide[deep[i].block]); /* the base separations move with the slides */
-    deep[i].impulse[0] = deep[i].impulse[1] = 0.0f;
+    load_deep(&deep[i], wide); /* the base separations move with the slides */
+    deep[i].impulse[0] = deep[i].impulse[1] = zero;
   }
   for (int sweep = 0; sweep < TB_PUSH_OUT_SWEEPS; ++sweep)
     for (int i = 0; i < w->deep_count; ++i) {
-      tb_deep_contact* d = &deep[i];
-      int a = d->a, b = d->b;
-      const tb_solver_body *sa = &states[a], *sb = &states[b];
-      float *ua = &u[3 * a], *ub = &u[3 * b];
-      tb_vec2 n = {d->nx, d->ny}, ra[2], rb[2];
-      float r[2], k[2][2] = {{d->k11, d->k12}, {d->k12, d->k22}};
-      float* acc = d->impulse;
+      tb_deep_block* d = &deep[i];
+      tb_f4 m[4];
+      load_rows(states, d->a, 1, m); /* (inv_inertia, da, dp.x, dp.y) */
+      tb_f4 da_a = m[1], dpx_a = m[2], dpy_a = m[3];
+      load_rows(states, d->b, 1, m);
+      tb_f4 da_b = m[1], dpx_b = m[2], dpy_b = m[3];
+      wide_push ua = gather_push(u, d->a), ub = gather_push(u, d->b);
+      tb_f4 nx = d->nx, ny = d->ny;
       /* r = (push speed without this contact's impulses) - target; an inert
        * second point (no mass) gets r = 0 and never moves */
+      tb_f4 r[2];
       for (int p = 0; p < 2; ++p) {
-        ra[p] = (tb_vec2){d->rax[p], d->ray[p]};
-        rb[p] = (tb_vec2){d->rbx[p], d->rby[p]};
+        tb_f4 rax = d->rax[p], ray = d->ray[p], rbx = d->rbx[p], rby = d->rby[p];
         /* the separation now, to first order in the angles (as normal_target) */
-        tb_vec2 moved = tb_sub(tb_add(sb->dp, tb_cross_sv(sb->da, rb[p])), tb_add(sa->dp, tb_cross_sv(sa->da, ra[p])));
-        float s = d->base_separation[p] + tb_dot(moved, n);
-        float target = fminf(rate * fmaxf(-d->push_depth[p] - s, 0.0f), push);
-        r[p] = d->normal_mass[p] > 0.0f ? push_speed(ua, ub, ra[p], rb[p], n) - target : 0.0f;
+        tb_f4 mx = (dpx_b + -da_b * rby) - (dpx_a + -da_a * ray);
+        tb_f4 my = (dpy_b + da_b * rbx) - (dpy_a + da_a * rax);
+        tb_f4 sep = d->base_separation[p] + (mx * nx + my * ny);
+        tb_f4 target = min4(rate * max4(-d->push_depth[p] - sep, zero), push);
+        r[p] = blend(d->normal_mass[p] > zero, push_speed(&ua, &ub, rax, ray, rbx, rby, nx, ny) - target, zero);
       }
-      r[0] -= k[0][0] * acc[0] + k[0][1] * acc[1];
-      r[1] -= k[1][0] * acc[0] + k[1][1] * acc[1];
-      /* the mixed LCP x >= 0, K x + r >= 0, complementary, as solve_wide */
-      float x[2] = {0.0f, 0.0f};
-      if (d->two) {
-        float both0 = -(d->n11 * r[0] + d->n12 * r[1]), both1 = -(d->n12 * r[0] + d->n22 * r[1]);
-        float only0 = -r[0] / k[0][0], only1 = -r[1] / k[1][1];
-        if (both0 >= 0.0f && both1 >= 0.0f) {
-          x[0] = both0;
-          x[1] = both1;
-        } else if (only0 >= 0.0f && r[1] + k[1][0] * only0 >= 0.0f) {
-          x[0] = only0;
-        } else if (only1 >= 0.0f && r[0] + k[0][1] * only1 >= 0.0f) {
-          x[1] = only1;
-        }
-      } else { /* one point, or two too close together: one after the other */
-        for (int p = 0; p < 2; ++p) {
-          if (!(d->normal_mass[p] > 0.0f)) continue;
-          float rp = r[p] + (p == 1 ? k[1][0] * x[0] : 0.0f);
-          x[p] = fmaxf(-d->normal_mass[p] * rp, 0.0f);
-        }
-      }
-      float ma = d->ma, ja = d->ja, mb = d->mb, jb = d->jb;
+      tb_f4* acc = d->impulse;
+      r[0] -= d->k11 * acc[0] + d->k12 * acc[1];
+      r[1] -= d->k12 * acc[0] + d->k22 * acc[1];
+      /* the mixed LCP x >= 0, K x + r >= 0, complementary, as solve_wide:
+       * both points; else only the first; else only the second; else none */
+      tb_f4 both0 = -(d->n11 * r[0] + d->n12 * r[1]), both1 = -(d->n12 * r[0] + d->n22 * r[1]);
+      tb_f4 only0 = -r[0] / d->k11, only1 = -r[1] / d->k22;
+      tb_i4 second = (only1 >= zero) & (r[0] + d->k12 * only1 >= zero);
+      tb_i4 first = (only0 >= zero) & (r[1] + d->k12 * only0 >= zero);
+      tb_i4 both = (both0 >= zero) & (both1 >= zero);
+      tb_f4 x0 = blend(both, both0, blend(first, only0, zero));
+      tb_f4 x1 = blend(both, both1, blend(first, zero, blend(second, only1, zero)));
+      /* one point, or two too close together: one after the other */
+      tb_f4 one0 = blend(d->normal_mass[0] > zero, max4(-d->normal_mass[0] * (r[0] + zero), zero), zero);
+      tb_f4 one1 = blend(d->normal_mass[1] > zero, max4(-d->normal_mass[1] * (r[1] + d->k12 * one0), zero), zero);
+      x0 = blend(d->two, x0, one0);
+      x1 = blend(d->two, x1, one1);
+      tb_f4 x[2] = {x0, x1};
       for (int p = 0; p < 2; ++p) {
-        tb_vec2 P = tb_scale(x[p] - acc[p], n);
+        tb_f4 step = x[p] - acc[p];
+        tb_f4 px = step * nx, py = step * ny;
         acc[p] = x[p];
-        ua[0] -= ma * P.x;
-        ua[1] -= ma * P.y;
-        ua[2] -= ja * tb_cross(ra[p], P);
-        ub[0] += mb * P.x;
-        ub[1] += mb * P.y;
-        ub[2] += jb * tb_cross(rb[p], P);
+        ua.x -= d->ma * px;
+        ua.y -= d->ma * py;
+        ua.w -= d->ja * (d->rax[p] * py - d->ray[p] * px);
+        ub.x += d->mb * px;
+        ub.y += d->mb * py;
+        ub.w += d->jb * (d->rbx[p] * py - d->rby[p] * px);
       }
+      scatter_push(u, d->a, &ua);
+      scatter_push(u, d->b, &ub);
     }
 }
 
@@ -1135,13 +1189,13 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
 size_t tb_contact_solver_bytes(const tb_world* w) {
   return (size_t)w->constraint_capacity * sizeof(tb_contact_constraint) +
          (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->wide_capacity * sizeof(tb_wide_contact) +
-         (size_t)w->deep_capacity * sizeof(tb_deep_contact) + (size_t)w->push_capacity * sizeof *w->push_velocities;
+         (size_t)w->deep_capacity * sizeof(tb_deep_block) + (size_t)w->push_capacity * sizeof *w->push_velocities;
 }
 
 void tb_contact_solver_free(tb_world* w) {
   tb_mem_free(w->constraints, (size_t)w->constraint_capacity * sizeof(tb_contact_constraint));
   tb_mem_free(w->color_lanes, (size_t)w->color_capacity * sizeof *w->color_lanes);
   tb_mem_free(w->wide, (size_t)w->wide_capacity * sizeof(tb_wide_contact));
-  tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_contact));
+  tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_block));
   tb_mem_free(w->push_velocities, (size_t)w->push_capacity * sizeof *w->push_velocities);
 }

@@ -115,7 +115,7 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, tb_body_motio
     tb_vec2 v = s->v;
     float omega = s->w;
     if (ctx->push_velocities) {
-      const float* push = &ctx->push_velocities[3 * i];
+      const float* push = &ctx->push_velocities[4 * i];
       v = (tb_vec2){v.x + push[0], v.y + push[1]};
       omega += push[2];
     }

@@ -78,7 +78,7 @@ typedef struct tb_world {
   int wide_fixed_from; /* the first block of contacts with a body that does not move (contact_solver.c) */
   void* deep_contacts; /* contacts with a point overlapping deeply this step (contact_solver.c) */
   int deep_capacity, deep_count;
-  float* push_velocities; /* per solver body: the push-out's (v.x, v.y, w), momentum-free */
+  float* push_velocities; /* per solver body: the push-out's (v.x, v.y, w, unused), momentum-free */
   int push_capacity;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
