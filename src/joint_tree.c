@@ -96,6 +96,16 @@ typedef struct tb_jt_node {
   float acc[3];
 } tb_jt_node;
 
+/* What a step joint's place in the trees depends on: the joint, its solver
+ * bodies and its rigid rows, and whether each body is a node that can turn
+ * (flags); `in_tree` is the build's answer for it. */
+typedef struct tb_jt_key {
+  int32_t joint, solver_a, solver_b;
+  int8_t rigid_rows;
+  uint8_t flags;
+  bool in_tree;
+} tb_jt_key;
+
 void tb_joint_tree_free(tb_joint_tree* t) {
   tb_mem_free(t->nodes, (size_t)t->node_capacity * sizeof *t->nodes);
   tb_mem_free(t->order, (size_t)t->order_capacity * sizeof *t->order);
@@ -104,6 +114,7 @@ void tb_joint_tree_free(tb_joint_tree* t) {
   tb_mem_free(t->body_scratch, (size_t)t->body_capacity * sizeof *t->body_scratch);
   tb_mem_free(t->edges, (size_t)t->edge_capacity * sizeof *t->edges);
   tb_mem_free(t->components, (size_t)t->component_capacity * sizeof *t->components);
+  tb_mem_free(t->keys, (size_t)t->key_capacity * sizeof *t->keys);
   memset(t, 0, sizeof *t);
 }
 
@@ -137,11 +148,57 @@ static int add_node(tb_joint_tree* t, int dof, int ref) {
   return t->node_count++;
 }
 
+
+static tb_jt_key joint_key(const tb_world* w, const tb_step_context* ctx, int k) {
+  const tb_step_joint* j = &w->step_joint_info[k];
+  int s[2] = {j->solver_a, j->solver_b};
+  uint8_t flags = 0;
+  for (int e = 0; e < 2; ++e) {
+    if (is_node_body(ctx, s[e])) flags |= (uint8_t)(1 << e);
+    if (ctx->states[s[e]].inv_inertia > 0.0f) flags |= (uint8_t)(4 << e);
+  }
+  return (tb_jt_key){w->step_joints[k], j->solver_a, j->solver_b, j->rigid_rows, flags, false};
+}
+
+/* Whether the trees of the last build still hold: the same awake bodies and
+ * step joints, each with the same key (a world whose joints and awake set do
+ * not change keeps its trees, and the build is a pass over the keys). Records
+ * the keys of this step either way. */
+static bool same_topology(tb_world* w, const tb_step_context* ctx) {
+  tb_joint_tree* t = &w->joint_tree;
+  int joints = w->step_joint_count;
+  bool same = t->key_count == joints && t->key_bodies == w->awake_count;
+  t->key_count = -1; /* (valid again once a build or this check succeeds) */
+  if (!tb_array_reserve((void**)&t->keys, &t->key_capacity, joints, sizeof *t->keys)) return false;
+  for (int k = 0; k < joints; ++k) {
+    tb_jt_key key = joint_key(w, ctx, k);
+    const tb_jt_key* old = &t->keys[k];
+    if (same && (old->joint != key.joint || old->solver_a != key.solver_a || old->solver_b != key.solver_b ||
+                 old->rigid_rows != key.rigid_rows || old->flags != key.flags)) {
+      same = false;
+    }
+    if (!same) t->keys[k] = key;
+  }
+  if (!same) return false;
+  for (int k = 0; k < joints; ++k) {
+    w->step_joint_info[k].in_tree = t->keys[k].in_tree;
+    if (t->keys[k].in_tree) tb_joint_at(w, t->keys[k].joint)->in_tree = true; /* tb_joint_prepare cleared it */
+  }
+  t->key_count = joints;
+  return true;
+}
+
 bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   tb_joint_tree* t = &w->joint_tree;
-  t->node_count = 0;
   int bodies = w->awake_count, joints = w->step_joint_count;
-  if (joints == 0) return true;
+  t->factored_for = t->rows_for = -1;
+  t->softness = tb_make_softness(TB_TREE_H_OMEGA * ctx->inv_h / TB_TWO_PI_F, w->joint_damping_ratio, ctx->h);
+  if (joints > 0 && same_topology(w, ctx)) return true;
+  t->node_count = 0;
+  if (joints == 0) {
+    t->key_count = -1;
+    return true;
+  }
   if (!tb_array_reserve((void**)&t->nodes, &t->node_capacity, bodies + joints, sizeof *t->nodes) ||
       !tb_array_reserve((void**)&t->order, &t->order_capacity, bodies + joints, sizeof *t->order) ||
       !tb_array_reserve((void**)&t->spare, &t->spare_capacity, bodies + joints, sizeof *t->spare) ||
@@ -150,9 +207,6 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges) ||
       !tb_array_reserve((void**)&t->components, &t->component_capacity, bodies + joints + 1, sizeof *t->components))
     return false;
-  t->factored_for = t->rows_for = -1;
-  float hw = TB_TREE_H_OMEGA;
-  t->softness = tb_make_softness(hw * ctx->inv_h / TB_TWO_PI_F, w->joint_damping_ratio, ctx->h);
 
   /* Groups of dynamic bodies linked by joints (union-find). A group whose
    * joints close a loop, or that has a rigid row the tree cannot take, stays
@@ -266,6 +320,12 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   t->spare_capacity = t->node_capacity;
   t->nodes = sorted;
   t->node_capacity = sorted_capacity;
+  /* the keys' answers, for the next steps' same_topology */
+  if (t->keys != NULL) {
+    for (int k = 0; k < joints; ++k) t->keys[k].in_tree = info[k].in_tree;
+    t->key_count = joints;
+    t->key_bodies = bodies;
+  }
   return true;
 }
 
@@ -570,5 +630,5 @@ size_t tb_joint_tree_bytes(const tb_joint_tree* t) {
   return (size_t)t->node_capacity * sizeof *t->nodes + (size_t)t->order_capacity * sizeof *t->order +
          (size_t)t->spare_capacity * sizeof *t->spare + (size_t)t->place_capacity * sizeof *t->place +
          (size_t)t->body_capacity * sizeof *t->body_scratch + (size_t)t->edge_capacity * sizeof *t->edges +
-         (size_t)t->component_capacity * sizeof *t->components;
+         (size_t)t->component_capacity * sizeof *t->components + (size_t)t->key_capacity * sizeof *t->keys;
 }
