@@ -84,7 +84,7 @@ typedef struct tb_wide_anchor {
   /* the normal impulses applied in the step, summed, and summed times the
    * arms they were applied at (restitution's J_e) */
   tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
-  tb_f4 max_normal_impulse; /* the largest normal impulse of the step (kept where the block is bouncy) */
+  tb_f4 max_normal_impulse;  /* the largest normal impulse of the step (kept where the block is bouncy) */
   tb_f4 shift_a, shift_b;    /* the common point's share of the relative displacement, per arm (see arms_now) */
   tb_f4 collided_separation; /* s0 as collided; base_separation differs past the patch's end (measure_slide) */
 } tb_wide_anchor;
@@ -137,15 +137,16 @@ typedef struct tb_contact_constraint {
  * the static dummy on both sides and no mass. */
 typedef struct tb_deep_block {
   int32_t block[4], lane[4];
-  int32_t a[4], b[4];           /* solver bodies */
-  tb_i4 two;                    /* both points solved together (block > 0) */
+  int32_t a[4], b[4]; /* solver bodies */
+  tb_i4 two;          /* both points solved together (block > 0) */
   tb_f4 impulse[2];
   tb_f4 nx, ny, ma, ja, mb, jb;
   tb_f4 k11, k12, k22, n11, n12, n22;
   tb_f4 rax[2], ray[2], rbx[2], rby[2]; /* step start anchors */
   tb_f4 base_separation[2], push_depth[2], normal_mass[2];
 } tb_deep_block;
-_Static_assert(sizeof(tb_deep_block) == 4 * 132, "the stress pile-up's memory budget counts 132 B a deep contact (tests/stress/pileup.c)");
+_Static_assert(sizeof(tb_deep_block) == 4 * 132,
+               "the stress pile-up's memory budget counts 132 B a deep contact (tests/stress/pileup.c)");
 
 /* ---- scratch --------------------------------------------------------------- */
 
@@ -406,7 +407,8 @@ static bool lane_is_deep(const tb_wide_contact* c, int lane) {
   bool deep = false;
   for (int p = 0; p < 2; ++p) {
     const tb_wide_point* wp = &c->p[p];
-    deep |= c->q[p].base_separation[lane] + wp->push_depth[lane] < 0.5f * TB_DEEP_OVERLAP && wp->normal_mass[lane] > 0.0f;
+    deep |=
+        c->q[p].base_separation[lane] + wp->push_depth[lane] < 0.5f * TB_DEEP_OVERLAP && wp->normal_mass[lane] > 0.0f;
   }
   return deep;
 }

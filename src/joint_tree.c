@@ -148,7 +148,6 @@ static int add_node(tb_joint_tree* t, int dof, int ref) {
   return t->node_count++;
 }
 
-
 static tb_jt_key joint_key(const tb_world* w, const tb_step_context* ctx, int k) {
   const tb_step_joint* j = &w->step_joint_info[k];
   int s[2] = {j->solver_a, j->solver_b};
@@ -379,17 +378,17 @@ static void inv_mass_times(const tb_solver_body* s, const float j[3], double out
  * those of the loops with variable bounds, so the results are the same. */
 
 /* Calls kernel(nd, pd, ...) with the sizes nd (child) and pd (parent) as constants. */
-#define BY_SHAPE(nd, pd, kernel, ...)                                       \
-  do {                                                                      \
-    int shape_ = (nd) * 4 + (pd);                                           \
-    switch (shape_) {                                                       \
-      case 3 * 4 + 1: kernel(3, 1, __VA_ARGS__); break;                     \
-      case 3 * 4 + 2: kernel(3, 2, __VA_ARGS__); break;                     \
-      case 3 * 4 + 3: kernel(3, 3, __VA_ARGS__); break;                     \
-      case 1 * 4 + 3: kernel(1, 3, __VA_ARGS__); break;                     \
-      case 2 * 4 + 3: kernel(2, 3, __VA_ARGS__); break;                     \
-      default: kernel(shape_ / 4, shape_ % 4, __VA_ARGS__); break;          \
-    }                                                                       \
+#define BY_SHAPE(nd, pd, kernel, ...)                              \
+  do {                                                             \
+    int shape_ = (nd)*4 + (pd);                                    \
+    switch (shape_) {                                              \
+      case 3 * 4 + 1: kernel(3, 1, __VA_ARGS__); break;            \
+      case 3 * 4 + 2: kernel(3, 2, __VA_ARGS__); break;            \
+      case 3 * 4 + 3: kernel(3, 3, __VA_ARGS__); break;            \
+      case 1 * 4 + 3: kernel(1, 3, __VA_ARGS__); break;            \
+      case 2 * 4 + 3: kernel(2, 3, __VA_ARGS__); break;            \
+      default: kernel(shape_ / 4, shape_ % 4, __VA_ARGS__); break; \
+    }                                                              \
   } while (0)
 
 /* D_p -= H_ip^T D_i^-1 H_ip (D_i already inverted) */

@@ -28,13 +28,13 @@ typedef struct tb_joint_tree {
   int edge_capacity;
   int* components; /* tree k is nodes [components[k], components[k + 1]) */
   int component_count, component_capacity;
-  struct tb_jt_key* keys; /* per step joint: what its place in the trees depends on (joint_tree.c) */
+  struct tb_jt_key* keys;      /* per step joint: what its place in the trees depends on (joint_tree.c) */
   int key_count, key_capacity; /* key_count: of the last build, -1 when none holds */
   int key_bodies;              /* the awake body count of the last build */
   tb_softness softness;        /* of the biased pass */
-  int factored_for;     /* the relax passes' factorisation is of this position update (-1: none) */
-  int rows_for;         /* the joint nodes' rows and K_c are of this position update (-1: none) */
-  double compliance;    /* g of the current factorisation (G = g K_c) */
+  int factored_for;            /* the relax passes' factorisation is of this position update (-1: none) */
+  int rows_for;                /* the joint nodes' rows and K_c are of this position update (-1: none) */
+  double compliance;           /* g of the current factorisation (G = g K_c) */
 } tb_joint_tree;
 
 struct tb_world;

@@ -321,8 +321,9 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     int index = w->step_joints[k];
     tb_joint_prepare(w, index, &ctx);
     const tb_joint* j = tb_joint_at(w, index);
-    w->step_joint_info[k] = (tb_step_joint){j->solver_a, j->solver_b, (int8_t)(j->skip ? 0 : tb_joint_rigid_row_count(j)),
-                                            tb_wide_joint_fits(j, &ctx), false};
+    w->step_joint_info[k] =
+        (tb_step_joint){j->solver_a, j->solver_b, (int8_t)(j->skip ? 0 : tb_joint_rigid_row_count(j)),
+                        tb_wide_joint_fits(j, &ctx), false};
   }
   if (!tb_joint_tree_build(w, &ctx)) { /* out of memory: Gauss-Seidel solves every joint */
     for (int k = 0; k < w->step_joint_count; ++k) {
