@@ -45,7 +45,8 @@ typedef struct tb_wide_joint {
   int32_t joint[4];         /* the joint of each lane, -1 for an unused one */
   int32_t angles;           /* any lane with a spring, motor or limit */
   int32_t tree;             /* any lane whose point a joint tree solves */
-  int32_t unused[2];        /* (the lanes' fields start on 16 bytes) */
+  int32_t points;           /* lanes whose point this block solves (none and no angles: only the warm start) */
+  int32_t unused;           /* (the lanes' fields start on 16 bytes) */
   tb_f4 fax, fay, fbx, fby; /* anchors from the centres of mass, world axes, step start */
   tb_f4 dcx, dcy;           /* centre of B minus centre of A at the step start */
   tb_f4 px, py;             /* the accumulated impulse (in a tree's lanes the tree keeps it, in the joint) */
@@ -179,6 +180,7 @@ void tb_wide_joints_build(tb_world* w, const tb_step_context* ctx) {
     wb->py[lane] = j->linear_impulse.y;
     wb->point[lane] = j->in_tree ? 0.0f : 1.0f;
     wb->tree |= j->in_tree;
+    wb->points += !j->in_tree;
     bool spring = j->enable_spring && j->hertz > 0.0f;
     if (!spring && !j->enable_motor && !j->enable_limit) continue;
     if (!wb->angles) memset(an, 0, sizeof *an); /* the block's first lane with angle rows */
@@ -381,20 +383,31 @@ static inline __attribute__((always_inline)) void solve_block(const tb_world* w,
   }
 }
 
+/* Whether a block has rows to solve: a joint that a tree holds and that has
+ * no spring, motor or limit (a chain, a pendulum) is here for its warm start
+ * only. */
+static bool has_rows(const tb_wide_joint* j) { return j->angles || j->points > 0; }
+
 void tb_wide_joints_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_wide_joints* wj = &w->wide_joints;
   /* Without warm starting every substep accumulates from zero (its biased
    * solve comes first), as joint.c does. */
   bool zero_first = use_bias && !ctx->enable_warm_starting;
   if (use_bias)
-    for (int b = 0; b < wj->block_count; ++b)
-      solve_block(w, &wj->blocks[b], &wj->angles[b], ctx, ctx->joint_softness, true, zero_first);
+    for (int b = 0; b < wj->block_count; ++b) {
+      if (has_rows(&wj->blocks[b]))
+        solve_block(w, &wj->blocks[b], &wj->angles[b], ctx, ctx->joint_softness, true, zero_first);
+      else if (zero_first)
+        zero_impulses(w, &wj->blocks[b], &wj->angles[b]); /* the trees' points start from zero too */
+    }
   else if (ctx->relax_all)
-    for (int b = 0; b < wj->block_count; ++b)
-      solve_block(w, &wj->blocks[b], &wj->angles[b], ctx, tb_rigid_softness(), false, false);
+    for (int b = 0; b < wj->block_count; ++b) {
+      if (has_rows(&wj->blocks[b]))
+        solve_block(w, &wj->blocks[b], &wj->angles[b], ctx, tb_rigid_softness(), false, false);
+    }
   else
     for (int b = 0; b < wj->block_count; ++b)
-      if (tb_relax_lanes_active(ctx, wj->blocks[b].a, wj->blocks[b].b))
+      if (has_rows(&wj->blocks[b]) && tb_relax_lanes_active(ctx, wj->blocks[b].a, wj->blocks[b].b))
         solve_block(w, &wj->blocks[b], &wj->angles[b], ctx, tb_rigid_softness(), false, false);
 }
 
