@@ -9,6 +9,9 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 #include "solver.h"
 
@@ -21,9 +24,17 @@ typedef int32_t tb_i4 __attribute__((vector_size(16)));
 
 static inline tb_f4 splat(float x) { return (tb_f4){x, x, x, x}; }
 static inline tb_f4 blend(tb_i4 mask, tb_f4 a, tb_f4 b) { return (tb_f4)(((tb_i4)a & mask) | ((tb_i4)b & ~mask)); }
+/* max4(a, b) = a > b ? a : b and min4(a, b) = a < b ? a : b, lane by lane
+ * (b where either is NaN, and b of two zeros): what SSE's maxps and minps do,
+ * one instruction each where the compare and blend take five. */
+#if defined(__SSE__)
+static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return (tb_f4)_mm_max_ps((__m128)a, (__m128)b); }
+static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return (tb_f4)_mm_min_ps((__m128)a, (__m128)b); }
+#else
 static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return blend(a > b, a, b); }
-static inline tb_f4 fabs4(tb_f4 a) { return (tb_f4)((tb_i4)a & (tb_i4){INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX}); }
 static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return blend(a < b, a, b); }
+#endif
+static inline tb_f4 fabs4(tb_f4 a) { return (tb_f4)((tb_i4)a & (tb_i4){INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX}); }
 
 /* Four solver bodies, field by field. A solver body begins with two rows of
  * four floats, (v.x, v.y, w, inv_mass) and (inv_inertia, da, dp.x, dp.y):
