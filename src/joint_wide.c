@@ -348,6 +348,15 @@ static inline __attribute__((always_inline)) void solve_block(const tb_world* w,
   wide_body A0 = A, B0 = B;
   if (zero_first) zero_impulses(w, j, an);
   if (j->angles) solve_angles(an, ctx, use_bias, &A, &B);
+  if (j->points == 0) { /* trees hold every lane's point: only the angle rows here */
+    scatter(states, j->a, &A);
+    scatter(states, j->b, &B);
+    if (!use_bias) {
+      note_moved(ctx, j->a, &A0, &A);
+      note_moved(ctx, j->b, &B0, &B);
+    }
+    return;
+  }
   wide_frame f = arms(j, states);
   tb_f4 rx = (B.vx + -B.w * f.rby) - (A.vx + -A.w * f.ray);
   tb_f4 ry = (B.vy + B.w * f.rbx) - (A.vy + A.w * f.rax);
