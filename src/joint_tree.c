@@ -323,8 +323,9 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   t->spare_capacity = t->node_capacity;
   t->nodes = sorted;
   t->node_capacity = sorted_capacity;
-  /* the keys' answers, for the next steps' same_topology */
-  if (t->keys != NULL) {
+  /* the keys' answers, for the next steps' same_topology (not when the keys
+   * could not grow: out of memory, every step builds) */
+  if (t->key_capacity >= joints) {
     for (int k = 0; k < joints; ++k) t->keys[k].in_tree = info[k].in_tree;
     t->key_count = joints;
     t->key_bodies = bodies;
