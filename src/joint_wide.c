@@ -340,32 +340,19 @@ static inline __attribute__((always_inline)) void solve_angles(tb_wide_angles* j
   B->w += ib * -impulse;
 }
 
-static inline __attribute__((always_inline)) void solve_block(const tb_world* w, tb_wide_joint* j, tb_wide_angles* an,
-                                                              tb_step_context* ctx, tb_softness s, bool use_bias,
-                                                              bool zero_first) {
-  tb_solver_body* states = ctx->states;
-  wide_body A = gather(states, j->a), B = gather(states, j->b);
-  wide_body A0 = A, B0 = B;
-  if (zero_first) zero_impulses(w, j, an);
-  if (j->angles) solve_angles(an, ctx, use_bias, &A, &B);
-  if (j->points == 0) { /* trees hold every lane's point: only the angle rows here */
-    scatter(states, j->a, &A);
-    scatter(states, j->b, &B);
-    if (!use_bias) {
-      note_moved(ctx, j->a, &A0, &A);
-      note_moved(ctx, j->b, &B0, &B);
-    }
-    return;
-  }
+/* The point rows of a block's lanes that no tree holds. */
+static inline __attribute__((always_inline)) void solve_point(tb_wide_joint* j, const tb_solver_body* states,
+                                                              tb_softness s, bool use_bias, wide_body* A,
+                                                              wide_body* B) {
   wide_frame f = arms(j, states);
-  tb_f4 rx = (B.vx + -B.w * f.rby) - (A.vx + -A.w * f.ray);
-  tb_f4 ry = (B.vy + B.w * f.rbx) - (A.vy + A.w * f.rax);
+  tb_f4 rx = (B->vx + -B->w * f.rby) - (A->vx + -A->w * f.ray);
+  tb_f4 ry = (B->vy + B->w * f.rbx) - (A->vy + A->w * f.rax);
   if (use_bias) { /* C = (dpB - dpA + (cB - cA)) + (rB - rA) */
     tb_f4 bias = splat(s.bias_rate);
-    rx += bias * (((B.dpx - A.dpx) + j->dcx) + (f.rbx - f.rax));
-    ry += bias * (((B.dpy - A.dpy) + j->dcy) + (f.rby - f.ray));
+    rx += bias * (((B->dpx - A->dpx) + j->dcx) + (f.rbx - f.rax));
+    ry += bias * (((B->dpy - A->dpy) + j->dcy) + (f.rby - f.ray));
   }
-  tb_f4 m = A.inv_mass + B.inv_mass, ia = A.inv_inertia, ib = B.inv_inertia;
+  tb_f4 m = A->inv_mass + B->inv_mass, ia = A->inv_inertia, ib = B->inv_inertia;
   tb_f4 k11 = m + ia * f.ray * f.ray + ib * f.rby * f.rby;
   tb_f4 k12 = -ia * f.rax * f.ray - ib * f.rbx * f.rby;
   tb_f4 k22 = m + ia * f.rax * f.rax + ib * f.rbx * f.rbx;
@@ -383,7 +370,18 @@ static inline __attribute__((always_inline)) void solve_block(const tb_world* w,
   }
   j->px += Px;
   j->py += Py;
-  apply(&f, Px, Py, &A, &B);
+  apply(&f, Px, Py, A, B);
+}
+
+static inline __attribute__((always_inline)) void solve_block(const tb_world* w, tb_wide_joint* j, tb_wide_angles* an,
+                                                              tb_step_context* ctx, tb_softness s, bool use_bias,
+                                                              bool zero_first) {
+  tb_solver_body* states = ctx->states;
+  wide_body A = gather(states, j->a), B = gather(states, j->b);
+  wide_body A0 = A, B0 = B;
+  if (zero_first) zero_impulses(w, j, an);
+  if (j->angles) solve_angles(an, ctx, use_bias, &A, &B);
+  if (j->points > 0) solve_point(j, states, s, use_bias, &A, &B); /* (none: trees hold every lane's point) */
   scatter(states, j->a, &A);
   scatter(states, j->b, &B);
   if (!use_bias) {
