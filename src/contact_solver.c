@@ -46,6 +46,12 @@
 #include "units.h"
 #include "wide.h"
 
+/* eight lanes at a time where the processor has AVX2 (see solve_pair) */
+#if defined(__x86_64__) && defined(__GNUC__) && (defined(__clang__) || __GNUC__ >= 12)
+#include <immintrin.h>
+#define TB_EIGHT_LANES 1
+#endif
+
 /* Deep overlap (bodies created or moved into each other): the soft push of a
  * point only grows down to the depth its load explains plus TB_DEEP_OVERLAP;
  * deeper than that, a separate momentum-free push-out moves the bodies apart
@@ -94,7 +100,7 @@ typedef struct tb_wide_contact {
   int32_t rolling;    /* any lane with rolling resistance */
   int32_t bouncy;     /* any lane with restitution (which needs the arms the impulses acted at) */
   int32_t slid_off;   /* any lane past its patch by more than TB_SLIDE_TOLERANCE */
-  int32_t unused;     /* (the lanes' fields start on 16 bytes) */
+  int32_t pair;       /* +1: solved with the next block, -1: with the one before, 0: alone (see solve_pair) */
   tb_f4 nx, ny, friction, tangent_speed;
   tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
   tb_f4 bias_rate, mass_scale;
@@ -483,6 +489,22 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
   return true;
 }
 
+/* Pairs of blocks of one colour, which a pass solves eight lanes at a time
+ * where the processor can (solve_pair). end_lane[c] is the lane after colour
+ * c's last contact. */
+static void pair_blocks(tb_wide_contact* wide, const int* end_lane, int colors) {
+  int from = 0;
+  for (int c = 0; c < colors; ++c) {
+    int to = (end_lane[c] + 3) / 4;
+    for (int b = from; b < to; ++b) wide[b].pair = 0;
+    for (int b = from; b + 1 < to; b += 2) {
+      wide[b].pair = 1;
+      wide[b + 1].pair = -1;
+    }
+    from = to;
+  }
+}
+
 bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int count = w->step_contact_count;
   if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
@@ -529,6 +551,7 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
     for (int lane = 0; lane < 4; ++lane)
       if (k[lane] < 0) clear_lane(&wide[b], lane, ctx->static_index);
   }
+  pair_blocks(wide, next_lane, colors);
   return collect_deep_contacts(w, ctx);
 }
 
@@ -744,6 +767,21 @@ static inline __attribute__((always_inline)) void refresh_arms(tb_wide_contact* 
   if (fmaxf(fmaxf(moved[0], moved[1]), fmaxf(moved[2], moved[3])) > TB_ARM_MASS_SHIFT) set_masses(c);
 }
 
+/* The relax passes' record of a block's lanes (relax_activity.h): the
+ * bodies of the lanes noted changed in this pass. Branch-free: a body not to
+ * note (or the static dummy) writes the sink. */
+static inline __attribute__((always_inline)) void note_lanes(tb_step_context* ctx, const tb_wide_contact* c,
+                                                             tb_i4 noted) {
+  tb_i4 a, b, stat = {ctx->static_index, ctx->static_index, ctx->static_index, ctx->static_index};
+  tb_i4 sink = stat + 1;
+  memcpy(&a, c->a, sizeof a);
+  memcpy(&b, c->b, sizeof b);
+  a = (a & (noted & (a != stat))) | (sink & ~(noted & (a != stat)));
+  b = (b & (noted & (b != stat))) | (sink & ~(noted & (b != stat)));
+  int32_t* changed_in = ctx->changed_in;
+  for (int lane = 0; lane < 4; ++lane) changed_in[a[lane]] = changed_in[b[lane]] = ctx->relax_pass;
+}
+
 /* Always inlined: each kind of pass gets a copy without the others'
  * branches. measure: the first pass after a position update, which measures
  * the slides and keeps the points' separations; stored: a later pass at the
@@ -818,16 +856,7 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
     /* the relax passes' record (relax_activity.h): the points' speed changes,
      * friction's taken at the normal K (the same order as the tangent one) */
     tb_f4 moved = max4(normal_change, max4(max4(f1, -f1) * c->k11, max4(f2, -f2) * c->k22));
-    tb_i4 noted = moved > splat(TB_RELAX_TOLERANCE);
-    /* branch-free: a body not to note (or the static dummy) writes the sink */
-    tb_i4 a, b, stat = {ctx->static_index, ctx->static_index, ctx->static_index, ctx->static_index};
-    tb_i4 sink = stat + 1;
-    memcpy(&a, c->a, sizeof a);
-    memcpy(&b, c->b, sizeof b);
-    a = (a & (noted & (a != stat))) | (sink & ~(noted & (a != stat)));
-    b = (b & (noted & (b != stat))) | (sink & ~(noted & (b != stat)));
-    int32_t* changed_in = ctx->changed_in;
-    for (int lane = 0; lane < 4; ++lane) changed_in[a[lane]] = changed_in[b[lane]] = ctx->relax_pass;
+    note_lanes(ctx, c, moved > splat(TB_RELAX_TOLERANCE));
   }
   if (c->rolling) {
     tb_f4 limit = c->rolling_resistance * (x1 + x2);
@@ -841,6 +870,282 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   scatter(states, c->a, &A);
   scatter(states, c->b, &B);
 }
+
+/* ---- eight lanes at a time ----------------------------------------------------
+ * Where the processor has AVX2, the passes that read the stored separations
+ * (the biased pass after the first substep, the later relax passes) solve two
+ * blocks of one colour at once, eight lanes, from the same blocks. Within a
+ * colour no two lanes share a moving body, so two blocks solved at once give
+ * what the two give one after the other, and each lane does the float
+ * operations of solve_wide in the same order: the results are the same bits
+ * as with four lanes, on any processor. */
+#if defined(TB_EIGHT_LANES)
+#define AVX2 __attribute__((target("avx2")))
+#define AVX2_INLINE static inline __attribute__((target("avx2"), always_inline))
+
+typedef float tb_f8 __attribute__((vector_size(32)));
+typedef int32_t tb_i8 __attribute__((vector_size(32)));
+
+AVX2_INLINE tb_f8 join(tb_f4 lo, tb_f4 hi) { return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7); }
+AVX2_INLINE tb_f4 low_half(tb_f8 v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
+AVX2_INLINE tb_f4 high_half(tb_f8 v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
+AVX2_INLINE tb_i4 low_mask(tb_i8 v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
+AVX2_INLINE tb_i4 high_mask(tb_i8 v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
+AVX2_INLINE tb_f8 splat8(float x) { return (tb_f8){x, x, x, x, x, x, x, x}; }
+AVX2_INLINE tb_f8 blend8(tb_i8 mask, tb_f8 a, tb_f8 b) { return (tb_f8)(((tb_i8)a & mask) | ((tb_i8)b & ~mask)); }
+/* as max4 and min4, lane by lane */
+AVX2_INLINE tb_f8 max8(tb_f8 a, tb_f8 b) { return (tb_f8)_mm256_max_ps((__m256)a, (__m256)b); }
+AVX2_INLINE tb_f8 min8(tb_f8 a, tb_f8 b) { return (tb_f8)_mm256_min_ps((__m256)a, (__m256)b); }
+
+typedef struct wide_body8 {
+  tb_f8 vx, vy, w, inv_mass;
+} wide_body8;
+
+typedef struct wide_arms8 {
+  tb_f8 rax, ray, rbx, rby;
+} wide_arms8;
+
+AVX2_INLINE wide_body8 gather8(const tb_solver_body* states, const int32_t* lo, const int32_t* hi) {
+  wide_body a = gather_velocities(states, lo), b = gather_velocities(states, hi);
+  return (wide_body8){join(a.vx, b.vx), join(a.vy, b.vy), join(a.w, b.w), join(a.inv_mass, b.inv_mass)};
+}
+
+AVX2_INLINE void scatter8(tb_solver_body* states, const int32_t* lo, const int32_t* hi, const wide_body8* v) {
+  wide_body a = {.vx = low_half(v->vx), .vy = low_half(v->vy), .w = low_half(v->w), .inv_mass = low_half(v->inv_mass)};
+  wide_body b = {
+      .vx = high_half(v->vx), .vy = high_half(v->vy), .w = high_half(v->w), .inv_mass = high_half(v->inv_mass)};
+  scatter(states, lo, &a);
+  scatter(states, hi, &b);
+}
+
+/* apply_impulse, eight lanes */
+AVX2_INLINE void apply8(tb_f8 ma, tb_f8 ja, tb_f8 mb, tb_f8 jb, const wide_arms8* r, tb_f8 Px, tb_f8 Py, wide_body8* A,
+                        wide_body8* B) {
+  A->vx -= ma * Px;
+  A->vy -= ma * Py;
+  A->w -= ja * (r->rax * Py - r->ray * Px);
+  B->vx += mb * Px;
+  B->vy += mb * Py;
+  B->w += jb * (r->rbx * Py - r->rby * Px);
+}
+
+/* relative_velocity, eight lanes */
+AVX2_INLINE void relative_velocity8(const wide_arms8* r, const wide_body8* A, const wide_body8* B, tb_f8* dvx,
+                                    tb_f8* dvy) {
+  *dvx = (B->vx + -B->w * r->rby) - (A->vx + -A->w * r->ray);
+  *dvy = (B->vy + B->w * r->rbx) - (A->vy + A->w * r->rax);
+}
+
+/* solve_wide at the stored separations for blocks c0 and c1 of one colour */
+AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_context* ctx, bool use_bias, bool record,
+                            tb_f8* change) {
+#define BOTH(field) join(c0->field, c1->field)
+#define STORE(field, v) (c0->field = low_half(v), c1->field = high_half(v))
+  tb_solver_body* states = ctx->states;
+  float inv_h = ctx->inv_h, push = ctx->contact_push_max_velocity;
+  wide_body8 A = gather8(states, c0->a, c1->a), B = gather8(states, c0->b, c1->b);
+  const tb_f8 zero = splat8(0.0f), one = splat8(1.0f);
+  tb_f8 nx = BOTH(nx), ny = BOTH(ny), ma = BOTH(ma), ja = BOTH(ja), mb = BOTH(mb), jb = BOTH(jb);
+  wide_arms8 arms[2];
+  tb_f8 t[2], ms[2], a[2];
+  for (int q = 0; q < 2; ++q) { /* normal_target */
+    arms[q] = (wide_arms8){BOTH(p[q].now_rax), BOTH(p[q].now_ray), BOTH(p[q].now_rbx), BOTH(p[q].now_rby)};
+    tb_f8 s = BOTH(p[q].separation), bias;
+    tb_i8 speculative = s > zero;
+    if (use_bias) {
+      bias = blend8(speculative, s * inv_h, max8(BOTH(bias_rate) * max8(s, -BOTH(p[q].push_depth)), splat8(-push)));
+      ms[q] = blend8(speculative, one, BOTH(mass_scale));
+    } else {
+      bias = blend8(speculative, s * inv_h, zero);
+      ms[q] = one;
+    }
+    tb_f8 dvx, dvy;
+    relative_velocity8(&arms[q], &A, &B, &dvx, &dvy);
+    t[q] = dvx * nx + dvy * ny + bias;
+    a[q] = BOTH(p[q].normal_impulse);
+  }
+  tb_f8 k11 = BOTH(k11), k12 = BOTH(k12), k22 = BOTH(k22);
+  tb_i8 two = BOTH(block) > zero;
+  tb_f8 r1 = t[0] - k11 * a[0] - k12 * a[1];
+  tb_f8 r2 = t[1] - k12 * a[0] - k22 * a[1];
+  tb_f8 x1 = a[0], x2 = a[1];
+  tb_i8 none = (r1 >= zero) & (~two | (r2 >= zero));
+  x1 = blend8(none, zero, x1);
+  x2 = blend8(none, zero, x2);
+  tb_f8 only2 = -ms[1] * BOTH(p[1].normal_mass) * r2;
+  tb_i8 second = two & (only2 >= zero) & (r1 + k12 * only2 >= zero);
+  x1 = blend8(second, zero, x1);
+  x2 = blend8(second, only2, x2);
+  tb_f8 only1 = -ms[0] * BOTH(p[0].normal_mass) * r1;
+  tb_i8 first = (only1 >= zero) & (~two | (r2 + k12 * only1 >= zero));
+  x1 = blend8(first, only1, x1);
+  x2 = blend8(first, zero, x2);
+  tb_f8 both1 = -ms[0] * (BOTH(n11) * r1 + BOTH(n12) * r2), both2 = -ms[1] * (BOTH(n12) * r1 + BOTH(n22) * r2);
+  tb_i8 both = two & (both1 >= zero) & (both2 >= zero);
+  x1 = blend8(both, both1, x1);
+  x2 = blend8(both, both2, x2);
+  tb_f8 x[2] = {x1, x2}, d[2];
+  for (int q = 0; q < 2; ++q) {
+    STORE(p[q].normal_impulse, x[q]);
+    d[q] = x[q] - a[q];
+    apply8(ma, ja, mb, jb, &arms[q], d[q] * nx, d[q] * ny, &A, &B);
+    if (c0->bouncy | c1->bouncy) { /* count_normal, in the blocks that bounce */
+      wide_arms now[2] = {
+          {low_half(arms[q].rax), low_half(arms[q].ray), low_half(arms[q].rbx), low_half(arms[q].rby)},
+          {high_half(arms[q].rax), high_half(arms[q].ray), high_half(arms[q].rbx), high_half(arms[q].rby)}};
+      tb_f4 step[2] = {low_half(d[q]), high_half(d[q])}, total[2] = {low_half(x[q]), high_half(x[q])};
+      tb_wide_contact* half[2] = {c0, c1};
+      for (int h = 0; h < 2; ++h)
+        if (half[h]->bouncy) {
+          count_normal(&half[h]->q[q], &now[h], step[h]);
+          half[h]->q[q].max_normal_impulse = max4(half[h]->q[q].max_normal_impulse, total[h]);
+        }
+    }
+  }
+  tb_f8 normal_change = max8(max8(d[0], -d[0]) * k11, max8(d[1], -d[1]) * k22);
+  if (!use_bias) *change = max8(*change, normal_change);
+  tb_f8 f[2], tx = ny, ty = -nx, tangent_speed = BOTH(tangent_speed), friction = BOTH(friction);
+  for (int q = 0; q < 2; ++q) { /* solve_friction */
+    tb_f8 dvx, dvy;
+    relative_velocity8(&arms[q], &A, &B, &dvx, &dvy);
+    tb_f8 vt = dvx * tx + dvy * ty;
+    tb_f8 impulse = -BOTH(p[q].tangent_mass) * (vt - tangent_speed);
+    tb_f8 limit = friction * x[q], held = BOTH(p[q].tangent_impulse);
+    tb_f8 total = min8(max8(held + impulse, -limit), limit);
+    impulse = total - held;
+    STORE(p[q].tangent_impulse, total);
+    apply8(ma, ja, mb, jb, &arms[q], impulse * tx, impulse * ty, &A, &B);
+    f[q] = impulse;
+  }
+  if (record) {
+    tb_f8 moved = max8(normal_change, max8(max8(f[0], -f[0]) * k11, max8(f[1], -f[1]) * k22));
+    tb_i8 noted = moved > splat8(TB_RELAX_TOLERANCE);
+    note_lanes(ctx, c0, low_mask(noted));
+    note_lanes(ctx, c1, high_mask(noted));
+  }
+  if (c0->rolling | c1->rolling) { /* in the blocks that roll, as solve_wide */
+    int32_t roll0 = c0->rolling ? -1 : 0, roll1 = c1->rolling ? -1 : 0;
+    tb_i8 rolls = {roll0, roll0, roll0, roll0, roll1, roll1, roll1, roll1};
+    tb_f8 held = BOTH(rolling_impulse), limit = BOTH(rolling_resistance) * (x1 + x2);
+    tb_f8 impulse = -BOTH(rolling_mass) * (B.w - A.w);
+    tb_f8 total = min8(max8(held + impulse, -limit), limit);
+    impulse = total - held;
+    STORE(rolling_impulse, blend8(rolls, total, held));
+    A.w = blend8(rolls, A.w - ja * impulse, A.w);
+    B.w = blend8(rolls, B.w + jb * impulse, B.w);
+  }
+  scatter8(states, c0->a, c1->a, &A);
+  scatter8(states, c0->b, c1->b, &B);
+#undef BOTH
+#undef STORE
+}
+
+/* warm_start_wide for blocks c0 and c1 of one colour */
+static AVX2 void warm_start_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_solver_body* states) {
+  wide_body8 A = gather8(states, c0->a, c1->a), B = gather8(states, c0->b, c1->b);
+  tb_f8 nx = join(c0->nx, c1->nx), ny = join(c0->ny, c1->ny), tx = ny, ty = -nx;
+  tb_f8 ma = join(c0->ma, c1->ma), ja = join(c0->ja, c1->ja), mb = join(c0->mb, c1->mb), jb = join(c0->jb, c1->jb);
+  for (int q = 0; q < 2; ++q) {
+    const tb_wide_point *p0 = &c0->p[q], *p1 = &c1->p[q];
+    wide_arms8 arms = {join(p0->now_rax, p1->now_rax), join(p0->now_ray, p1->now_ray), join(p0->now_rbx, p1->now_rbx),
+                       join(p0->now_rby, p1->now_rby)};
+    if (c0->bouncy)
+      count_normal(&c0->q[q], &(wide_arms){p0->now_rax, p0->now_ray, p0->now_rbx, p0->now_rby}, p0->normal_impulse);
+    if (c1->bouncy)
+      count_normal(&c1->q[q], &(wide_arms){p1->now_rax, p1->now_ray, p1->now_rbx, p1->now_rby}, p1->normal_impulse);
+    tb_f8 normal = join(p0->normal_impulse, p1->normal_impulse),
+          tangent = join(p0->tangent_impulse, p1->tangent_impulse);
+    tb_f8 Px = normal * nx + tangent * tx;
+    tb_f8 Py = normal * ny + tangent * ty;
+    apply8(ma, ja, mb, jb, &arms, Px, Py, &A, &B);
+  }
+  tb_f8 rolling = join(c0->rolling_impulse, c1->rolling_impulse);
+  A.w -= ja * rolling;
+  B.w += jb * rolling;
+  scatter8(states, c0->a, c1->a, &A);
+  scatter8(states, c0->b, c1->b, &B);
+}
+
+static AVX2 void warm_start_pairs(tb_wide_contact* wide, int count, tb_solver_body* states) {
+  for (int b = 0; b < count; ++b)
+    if (wide[b].pair == 1)
+      warm_start_pair(&wide[b], &wide[b + 1], states), ++b;
+    else
+      warm_start_wide(&wide[b], states);
+}
+
+/* What solve_wide does before its normal targets where it does not read
+ * the stored separations: the separations at the positions now, and in the
+ * first pass after a position update (measure) the arms and the slides. */
+AVX2_INLINE void separations_now(tb_wide_contact* c, const tb_step_context* ctx, bool measure) {
+  wide_body A = gather(ctx->states, c->a), B = gather(ctx->states, c->b);
+  if (measure) {
+    refresh_arms(c, &A, &B);
+    measure_slide(c, &A, &B);
+  }
+  for (int q = 0; q < 2; ++q) c->p[q].separation = normal_motion(c, &c->q[q], &A, &B) + c->q[q].base_separation;
+}
+
+/* One group's sweep, pairs eight lanes at a time. stored: the pass reads the
+ * stored separations (else a pair measures them first, measure as in
+ * solve_wide); skip: a later relax pass, which solves only blocks with a
+ * body that still moves, each half of a pair as its own block would be. */
+AVX2_INLINE void sweep_pairs(tb_wide_contact* wide, int lo, int hi, bool backward, tb_step_context* ctx, bool use_bias,
+                             bool stored, bool measure, bool skip, tb_f4* change) {
+  tb_f8 change8 = splat8(0.0f);
+  int step = backward ? -1 : 1;
+  bool record = skip || measure;
+  for (int i = lo, b = backward ? hi - 1 : lo; i < hi; ++i, b += step) {
+    tb_wide_contact* c = &wide[b];
+    bool paired = c->pair == step; /* its partner is the next block of the sweep */
+    tb_wide_contact* partner = paired ? &wide[b + step] : NULL;
+    if (paired) ++i, b += step;
+    if (!skip) {
+      if (paired) {
+        if (!stored) {
+          separations_now(c, ctx, measure);
+          separations_now(partner, ctx, measure);
+        }
+        solve_pair(c, partner, ctx, use_bias, record, &change8);
+      } else {
+        solve_wide(c, ctx, use_bias, measure, stored, record, change);
+      }
+      continue;
+    }
+    bool on = tb_relax_lanes_active(ctx, c->a, c->b);
+    bool partner_on = paired && tb_relax_lanes_active(ctx, partner->a, partner->b);
+    ctx->relax_solved += (int)on + (int)partner_on;
+    if (on && partner_on)
+      solve_pair(c, partner, ctx, false, true, &change8);
+    else if (on)
+      solve_wide(c, ctx, false, false, true, true, change);
+    else if (partner_on)
+      solve_wide(partner, ctx, false, false, true, true, change);
+  }
+  *change = max4(max4(*change, low_half(change8)), high_half(change8));
+}
+
+/* The pass kinds of tb_contact_solver_solve, each a copy of its own. */
+static AVX2 void sweep_pairs_by_kind(tb_wide_contact* wide, int lo, int hi, bool backward, tb_step_context* ctx,
+                                     bool use_bias, bool stored, bool measure, tb_f4* change) {
+  if (use_bias && stored)
+    sweep_pairs(wide, lo, hi, backward, ctx, true, true, false, false, change);
+  else if (use_bias)
+    sweep_pairs(wide, lo, hi, backward, ctx, true, false, false, false, change);
+  else if (measure)
+    sweep_pairs(wide, lo, hi, backward, ctx, false, false, true, false, change);
+  else if (ctx->relax_all)
+    sweep_pairs(wide, lo, hi, backward, ctx, false, true, false, false, change);
+  else
+    sweep_pairs(wide, lo, hi, backward, ctx, false, true, false, true, change);
+}
+
+static bool eight_lanes(void) { return __builtin_cpu_supports("avx2"); }
+#else
+static bool eight_lanes(void) { return false; }
+#endif
+
+bool tb_contact_solver_eight_lanes(void) { return eight_lanes(); }
 
 /* ---- deep overlap push-out ----------------------------------------------------- */
 
@@ -982,6 +1287,12 @@ void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
 
 void tb_contact_solver_warm_start(tb_world* w, tb_step_context* ctx) {
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+#if defined(TB_EIGHT_LANES)
+  if (!ctx->four_lanes && eight_lanes()) {
+    warm_start_pairs(wide, w->wide_count, ctx->states);
+    return;
+  }
+#endif
   for (int b = 0; b < w->wide_count; ++b) warm_start_wide(&wide[b], ctx->states);
 }
 
@@ -1024,10 +1335,17 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
    * the later relax passes and the next substep's biased pass (only velocities
    * change in between). The first substep's biased pass computes its own. */
   bool stored = !measure && ctx->position_updates > 0;
+  bool pairs = !ctx->four_lanes && eight_lanes();
   /* one loop per pass kind, each with solve_wide specialised for it */
   for (int group = 0; group < 2; ++group) {
     int lo = group == 0 ? 0 : fixed_from, hi = group == 0 ? fixed_from : n;
     int first = backward ? hi - 1 : lo, step = backward ? -1 : 1;
+#if defined(TB_EIGHT_LANES)
+    if (pairs) {
+      sweep_pairs_by_kind(wide, lo, hi, backward, ctx, use_bias, stored, measure, &change);
+      continue;
+    }
+#endif
     if (use_bias && stored)
       for (int i = lo, b = first; i < hi; ++i, b += step) solve_wide(&wide[b], ctx, true, false, true, false, &change);
     else if (use_bias)

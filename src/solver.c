@@ -276,6 +276,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.static_index = n;
   ctx.changed_in = w->changed_in;
   ctx.reach = w->reach;
+  ctx.four_lanes = w->contacts_four_lanes;
 
   /* solver bodies and per-step motion terms */
   tb_body_motion* motions = (tb_body_motion*)w->motions;

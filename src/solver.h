@@ -71,6 +71,7 @@ typedef struct tb_step_context {
   int relax_pass;   /* the current relax pass, counted from 1 over the step */
   bool relax_all;   /* every constraint is solved in this relax pass (and nothing recorded) */
   int relax_solved; /* contact blocks the last relax pass solved */
+  bool four_lanes;  /* contacts four lanes at a time even where eight could be (tests' reference) */
 } tb_step_context;
 
 /* The speed caps (tumble.h, maximum_linear_speed) hold for every moving body

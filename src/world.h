@@ -86,6 +86,7 @@ typedef struct tb_world {
   int step_joint_info_capacity;
   int scalar_joint_count; /* the first ones of step_joints, solved one at a time; the rest in wide_joints */
   bool joints_one_at_a_time; /* tests' reference: joint_wide.c takes no joint (not in the public API) */
+  bool contacts_four_lanes;  /* tests' reference: no eight-lane contact passes (contact_solver.c) */
   tb_joint_tree joint_tree;
   tb_wide_joints wide_joints;
   int* scratch; /* island search stack and marks */
@@ -160,6 +161,8 @@ int tb_solve(tb_world* world, float time_step, int substeps);
  * (restitution, impulses kept for the next step). */
 bool tb_contact_solver_prepare(tb_world* w, struct tb_step_context* ctx);
 void tb_contact_solver_warm_start(tb_world* w, struct tb_step_context* ctx);
+/* Whether the contact passes run eight lanes at a time on this processor (AVX2). */
+bool tb_contact_solver_eight_lanes(void);
 void tb_contact_solver_reset(tb_world* w);
 /* One pass over the contacts, in their colour order or (backward) the
  * reverse; returns the largest normal speed change a point got in a relax

@@ -12,6 +12,7 @@
 
 #include <stdlib.h>
 
+#include "../src/world.h"
 #include "test_util.h"
 
 #define DT (1.0f / 60.0f)
@@ -1471,6 +1472,60 @@ START_TEST(off_centre_impacts_keep_momenta) {
 }
 END_TEST
 
+/* Eight lanes give the bits of four. Where the processor has AVX2 the
+ * contact passes solve two blocks of one colour at once (contact_solver.c);
+ * the world's internal contacts_four_lanes switch (the reference) keeps them
+ * four lanes at a time. A pile with every kind of contact block: a pyramid,
+ * circles that bounce and discs with rolling resistance dropped on it,
+ * capsules, a kinematic paddle turning through the pile, and a box created
+ * inside the pyramid (the push-out); stepped both ways, interleaved, its
+ * hash compared every 10 steps. */
+static tb_world_id lanes_scene(bool four_lanes) {
+  tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, true);
+  tb_world* world = tb_world_get(w, "test");
+  ck_assert_ptr_nonnull(world);
+  world->contacts_four_lanes = four_lanes;
+  ground_box(w, 40.0f, 0.6f);
+  pyramid(w, 0.0f, 12);
+  unsigned seed = 777u;
+  for (int i = 0; i < 60; ++i) {
+    tb_vec2 p = {tbt_rand(&seed, -8.0f, 8.0f), tbt_rand(&seed, 14.0f, 30.0f)};
+    tb_shape_def sd = material(1.0f, 0.5f, i % 3 == 0 ? 0.5f : 0.0f);
+    sd.rolling_resistance = i % 4 == 1 ? 0.1f : 0.0f;
+    if (i % 5 == 4) {
+      tb_body_id b = make_body(w, TB_DYNAMIC_BODY, p, tbt_rand(&seed, 0.0f, 3.0f));
+      tb_capsule c = {{-0.4f, 0.0f}, {0.4f, 0.0f}, 0.2f};
+      ck_assert(!tb_shape_id_is_null(tb_create_capsule_shape(b, &sd, &c)));
+    } else {
+      circle_body(w, TB_DYNAMIC_BODY, p, tbt_rand(&seed, 0.2f, 0.5f), &sd);
+    }
+  }
+  tb_shape_def pd = material(1.0f, 0.6f, 0.0f);
+  tb_body_id paddle = box_body(w, TB_KINEMATIC_BODY, (tb_vec2){-9.0f, 2.0f}, 0.0f, 2.0f, 0.2f, &pd);
+  tb_body_set_angular_velocity(paddle, 1.0f);
+  box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.2f, 3.3f}, 0.3f, 0.5f, 0.5f, &pd);
+  return w;
+}
+
+START_TEST(eight_lanes_give_the_bits_of_four) {
+  if (!tb_contact_solver_eight_lanes()) fprintf(stderr, "eight lanes: no AVX2 here, both worlds run four lanes\n");
+  tb_world_id four = lanes_scene(true), eight = lanes_scene(false);
+  int most_blocks = 0;
+  for (int i = 1; i <= 600; ++i) {
+    step(four, 1);
+    step(eight, 1);
+    int blocks = tb_world_get(eight, "test")->wide_count;
+    most_blocks = blocks > most_blocks ? blocks : most_blocks;
+    if (i % 10 == 0) ck_assert_msg(tb_world_hash(four) == tb_world_hash(eight), "the worlds differ after %d steps", i);
+  }
+  /* enough blocks for pairs of one colour (the pyramid alone has 4 colours
+   * of 78 to 132 contacts) */
+  ck_assert_int_ge(most_blocks, 40);
+  tb_destroy_world(four);
+  tb_destroy_world(eight);
+}
+END_TEST
+
 static Suite* solver_suite(void) {
   Suite* s = suite_create("solver");
   TCase* tc = tcase_create("closed_forms");
@@ -1486,6 +1541,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, small_boxes_rest_at_the_spring_overlap);
   tcase_add_test(tc, newtons_cradle);
   tcase_add_test(tc, determinism);
+  tcase_add_test(tc, eight_lanes_give_the_bits_of_four);
   tcase_add_test(tc, conveyor_belt);
   tcase_add_test(tc, rolling_resistance);
   tcase_add_test(tc, bad_world_def_solver_fields);
