@@ -362,12 +362,19 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   }
 }
 
-/* An unused lane: both points inert, both bodies the static dummy. */
-static void clear_lane(tb_wide_contact* wc, int lane, int static_index) {
+/* The unused lanes of a block (k[lane] < 0): both points inert, both bodies
+ * the static dummy. */
+static void clear_lanes(tb_wide_contact* wc, const int32_t* k, int static_index) {
+  tb_i4 unused = {k[0] < 0 ? -1 : 0, k[1] < 0 ? -1 : 0, k[2] < 0 ? -1 : 0, k[3] < 0 ? -1 : 0};
   tb_f4* fields = &wc->nx;
-  for (size_t f = 0; f < (sizeof *wc - offsetof(tb_wide_contact, nx)) / sizeof(tb_f4); ++f) fields[f][lane] = 0.0f;
-  for (int p = 0; p < 2; ++p) wc->q[p].base_separation[lane] = wc->q[p].collided_separation[lane] = 1.0f;
-  wc->a[lane] = wc->b[lane] = static_index;
+  for (size_t f = 0; f < (sizeof *wc - offsetof(tb_wide_contact, nx)) / sizeof(tb_f4); ++f)
+    fields[f] = blend(unused, splat(0.0f), fields[f]);
+  for (int p = 0; p < 2; ++p) {
+    wc->q[p].base_separation = blend(unused, splat(1.0f), wc->q[p].base_separation);
+    wc->q[p].collided_separation = blend(unused, splat(1.0f), wc->q[p].collided_separation);
+  }
+  for (int lane = 0; lane < 4; ++lane)
+    if (k[lane] < 0) wc->a[lane] = wc->b[lane] = static_index;
 }
 
 /* The contacts' colours: first those between two moving bodies, then, in
@@ -548,8 +555,7 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
       for (int lane = 0; lane < 4; ++lane)
         if (k[4 + lane] >= 0) __builtin_prefetch(tb_pool_at(&w->contacts, w->step_contacts[k[4 + lane]]));
     prepare_block(w, ctx, k, &wide[b]);
-    for (int lane = 0; lane < 4; ++lane)
-      if (k[lane] < 0) clear_lane(&wide[b], lane, ctx->static_index);
+    if ((k[0] | k[1] | k[2] | k[3]) < 0) clear_lanes(&wide[b], k, ctx->static_index);
   }
   pair_blocks(wide, next_lane, colors);
   return collect_deep_contacts(w, ctx);
@@ -764,7 +770,7 @@ static inline __attribute__((always_inline)) void refresh_arms(tb_wide_contact* 
     cp->now_rbx = arms.rbx;
     cp->now_rby = arms.rby;
   }
-  if (fmaxf(fmaxf(moved[0], moved[1]), fmaxf(moved[2], moved[3])) > TB_ARM_MASS_SHIFT) set_masses(c);
+  if (max_lane(moved) > TB_ARM_MASS_SHIFT) set_masses(c);
 }
 
 /* The relax passes' record of a block's lanes (relax_activity.h): the
@@ -1322,6 +1328,7 @@ void tb_contact_solver_reset(tb_world* w) {
  * goes into the contact between the two boxes, which can push both apart
  * again; the static world cannot move out of the way. */
 float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, bool backward) {
+  if (w->wide_count == 0) return 0.0f; /* (a world in free flight calls this twice a substep) */
   tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   tb_f4 change = splat(0.0f);
   int n = w->wide_count, fixed_from = w->wide_fixed_from;
@@ -1361,7 +1368,7 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
           ctx->relax_solved += 1;
         }
   }
-  return fmaxf(fmaxf(change[0], change[1]), fmaxf(change[2], change[3]));
+  return max_lane(change);
 }
 
 #define TB_RESTITUTION_PASSES 16

@@ -34,6 +34,13 @@ static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return (tb_f4)_mm_min_ps((__m128)a,
 static inline tb_f4 max4(tb_f4 a, tb_f4 b) { return blend(a > b, a, b); }
 static inline tb_f4 min4(tb_f4 a, tb_f4 b) { return blend(a < b, a, b); }
 #endif
+/* The largest lane, NaN lanes left out (what fmaxf over the lanes gives,
+ * without four calls into libm). */
+static inline float max_lane(tb_f4 v) {
+  float m = v[0];
+  for (int lane = 1; lane < 4; ++lane) m = v[lane] > m || m != m ? v[lane] : m;
+  return m;
+}
 static inline tb_f4 fabs4(tb_f4 a) { return (tb_f4)((tb_i4)a & (tb_i4){INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX}); }
 
 /* Four solver bodies, field by field. A solver body begins with two rows of
