@@ -95,8 +95,9 @@ typedef struct tb_jt_node {
   float acc[3];
   double kc[3][3]; /* joint: K_c, the row block's own effective-mass inverse (G = g K_c) */
   tb_rigid_rows rows;
-  int first; /* body: its first edge in tree->edges */
-  int count; /* body: its edge count */
+  int first;              /* body: its first edge in tree->edges */
+  int count;              /* body: its edge count */
+  int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
   int a, b;  /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
 } tb_jt_node;
 
@@ -290,14 +291,16 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     t->order[ordered++] = root;
     for (int q = ordered - 1; q < ordered; ++q) {
       int i = t->order[q];
-      const tb_jt_node* n = &t->nodes[i];
+      tb_jt_node* n = &t->nodes[i];
       int around = i < body_nodes ? n->count : 2;
+      n->children = ordered;
       for (int e = 0; e < around; ++e) {
         int m = i < body_nodes ? t->edges[n->first + e] : (e == 0 ? n->a : n->b);
         if (m < 0 || t->nodes[m].parent != -2) continue;
         t->nodes[m].parent = i;
         t->order[ordered++] = m;
       }
+      n->children_end = ordered;
     }
   }
   t->components[t->component_count] = ordered;
@@ -335,9 +338,10 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
 
 /* ---- small dense blocks (at most 3 x 3) ----------------------------------- */
 
-/* In place inverse; zero when singular (the rows then make no correction). */
-static void invert(double m[3][3], int n) {
-  double r[3][3] = {{0.0}};
+/* In place inverse of the leading n x n block; zero when singular (the rows
+ * then make no correction). n is a constant where it is inlined (invert). */
+static inline __attribute__((always_inline)) void invert_n(int n, double m[3][3]) {
+  double r[3][3];
   double det;
   if (n == 1) {
     det = m[0][0];
@@ -360,6 +364,14 @@ static void invert(double m[3][3], int n) {
   double inv = det != 0.0 && isfinite(det) ? 1.0 / det : 0.0;
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < n; ++k) m[i][k] = r[i][k] * inv;
+}
+
+static void invert(double m[3][3], int n) {
+  switch (n) {
+    case 1: invert_n(1, m); break;
+    case 2: invert_n(2, m); break;
+    default: invert_n(3, m); break;
+  }
 }
 
 /* A row block's Jacobian on one of its bodies, as a k x 3 block with the sign
@@ -430,38 +442,45 @@ static inline __attribute__((always_inline)) void back(int nd, int pd, tb_jt_nod
 
 /* ---- the solve -------------------------------------------------------------- */
 
-/* A joint's block of D, -G = -g K_c, at the current positions. Its rows and
- * K_c depend on the positions only: computed when `fresh` (the first
- * factorisation after a position update, the relax one), read again by the
- * biased one of the next substep. `load`: the accumulated impulses are read
- * from the joint (the biased factorisation, after tb_joint_tree_store). */
-static void init_joint(tb_world* w, tb_step_context* ctx, tb_jt_node* n, double g, bool fresh, bool load) {
-  int k = n->dof;
-  if (fresh) {
-    tb_joint* j = tb_joint_at(w, n->ref);
-    const tb_solver_body* a = &ctx->states[n->sa];
-    const tb_solver_body* b = &ctx->states[n->sb];
-    tb_joint_rigid_rows(j, a, b, &n->rows);
-    double ma[3][3], mb[3][3]; /* M^-1 J^T columns of each row */
-    for (int r = 0; r < k; ++r) {
-      inv_mass_times(a, n->rows.ja[r], ma[r]);
-      inv_mass_times(b, n->rows.jb[r], mb[r]);
-    }
-    for (int r = 0; r < k; ++r) {
-      const float* ja = n->rows.ja[r];
-      const float* jb = n->rows.jb[r];
-      for (int s = 0; s < k; ++s) {
-        double kc = 0.0;
-        for (int c = 0; c < 3; ++c) kc += ja[c] * ma[s][c] + jb[c] * mb[s][c];
-        n->kc[r][s] = kc;
-      }
+/* K_c of a joint's k rows (k a constant where inlined, joint_rows). */
+static inline __attribute__((always_inline)) void block_mass(int k, tb_jt_node* n, const tb_solver_body* a,
+                                                             const tb_solver_body* b) {
+  double ma[3][3], mb[3][3]; /* M^-1 J^T columns of each row */
+  UNROLLED for (int r = 0; r < k; ++r) {
+    inv_mass_times(a, n->rows.ja[r], ma[r]);
+    inv_mass_times(b, n->rows.jb[r], mb[r]);
+  }
+  UNROLLED for (int r = 0; r < k; ++r) {
+    const float* ja = n->rows.ja[r];
+    const float* jb = n->rows.jb[r];
+    UNROLLED for (int s = 0; s < k; ++s) {
+      double kc = 0.0;
+      UNROLLED for (int c = 0; c < 3; ++c) kc += ja[c] * ma[s][c] + jb[c] * mb[s][c];
+      n->kc[r][s] = kc;
     }
   }
-  if (load)
-    for (int r = 0; r < k; ++r) n->acc[r] = *n->rows.impulse[r];
-  memset(n->d, 0, sizeof n->d);
-  for (int r = 0; r < k; ++r)
-    for (int s = 0; s < k; ++s) n->d[r][s] = -g * n->kc[r][s];
+}
+
+/* A joint's rows, K_c and H toward its parent at the current positions. They
+ * depend on the positions only: computed by the first factorisation after a
+ * position update (the relax one) and read again by the biased one of the
+ * next substep. */
+static void joint_rows(tb_world* w, const tb_step_context* ctx, tb_jt_node* n) {
+  const tb_solver_body* a = &ctx->states[n->sa];
+  const tb_solver_body* b = &ctx->states[n->sb];
+  tb_joint_rigid_rows(tb_joint_at(w, n->ref), a, b, &n->rows);
+  switch (n->dof) {
+    case 1: block_mass(1, n, a, b); break;
+    case 2: block_mass(2, n, a, b); break;
+    default: block_mass(3, n, a, b); break;
+  }
+  if (n->parent >= 0) joint_block(n, n->a == n->parent, n->hp);
+}
+
+/* H of a body toward its parent joint: the transpose of the joint's block. */
+static void body_block(tb_jt_node* n, const tb_jt_node* joint, bool side_a) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < joint->dof; ++c) n->hp[r][c] = side_a ? joint->rows.ja[c][r] : -joint->rows.jb[c][r];
 }
 
 /* h k of a joint's point rows on the side of body A or B (the file comment):
@@ -475,6 +494,25 @@ static double point_twist(const tb_jt_node* joint, bool side_a) {
   return tb_dot((tb_vec2){joint->rows.jb[r + 1][2], -joint->rows.jb[r][2]}, p);
 }
 
+/* A body node's block of D, its mass and inertia, with the geometric
+ * stiffness beyond the inertia in the biased factorisation (file comment;
+ * its joints' impulses already loaded). */
+static void body_mass(const tb_joint_tree* t, const tb_step_context* ctx, tb_jt_node* n, int i, bool use_bias) {
+  const tb_solver_body* s = &ctx->states[n->ref];
+  n->stiff = 0.0;
+  if (use_bias) {
+    double twist = 0.0; /* h k (the rows' r . p) */
+    for (int e = 0; e < n->count; ++e) {
+      const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
+      twist += point_twist(joint, joint->a == i);
+    }
+    n->stiff = fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0);
+  }
+  memset(n->d, 0, sizeof n->d);
+  n->d[0][0] = n->d[1][1] = 1.0 / (double)s->inv_mass;
+  n->d[2][2] = 1.0 / (double)s->inv_inertia + n->stiff;
+}
+
 /* The factorisation of the system at the current positions: every block and
  * D^-1 (children first). It depends on the positions (the rows) and on the
  * pass kind (compliance, geometric stiffness), not on the velocities, so the
@@ -485,67 +523,62 @@ static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
   bool fresh = t->rows_for != ctx->position_updates;
   t->rows_for = ctx->position_updates;
   t->compliance = g;
-  for (int i = 0; i < t->node_count; ++i)
-    if (!t->nodes[i].body) init_joint(w, ctx, &t->nodes[i], g, fresh, use_bias);
+  /* parents first: the joints' blocks -G = -g K_c (and, new positions, their
+   * rows), the accumulated impulses (the biased factorisation, after
+   * tb_joint_tree_store), and a body's H from its parent joint's rows */
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
-    if (!n->body) continue;
-    const tb_solver_body* s = &ctx->states[n->ref];
-    /* geometric stiffness beyond the inertia (file comment) */
-    n->stiff = 0.0;
-    if (use_bias) {
-      double twist = 0.0; /* h k (the rows' r . p) */
-      for (int e = 0; e < n->count; ++e) {
-        const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
-        twist += point_twist(joint, joint->a == i);
-      }
-      n->stiff = fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0);
+    if (n->body) {
+      if (fresh && n->parent >= 0) body_block(n, &t->nodes[n->parent], t->nodes[n->parent].a == i);
+      continue;
     }
+    if (fresh) joint_rows(w, ctx, n);
+    int k = n->dof;
+    if (use_bias)
+      for (int r = 0; r < k; ++r) n->acc[r] = *n->rows.impulse[r];
     memset(n->d, 0, sizeof n->d);
-    n->d[0][0] = n->d[1][1] = 1.0 / (double)s->inv_mass;
-    n->d[2][2] = 1.0 / (double)s->inv_inertia + n->stiff;
+    for (int r = 0; r < k; ++r)
+      for (int s = 0; s < k; ++s) n->d[r][s] = -g * n->kc[r][s];
   }
-  /* H_{i,parent} of every child (from the rows: new when they are) */
-  for (int i = 0; i < t->node_count && fresh; ++i) {
-    tb_jt_node* n = &t->nodes[i];
-    if (n->parent < 0) continue;
-    if (!n->body) {
-      joint_block(n, n->a == n->parent, n->hp);
-    } else {
-      const tb_jt_node* joint = &t->nodes[n->parent];
-      float block[3][3];
-      joint_block(joint, joint->a == i, block);
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < joint->dof; ++c) n->hp[r][c] = block[c][r];
-    }
-  }
-  /* D_p -= H_ip^T D_i^-1 H_ip, children first */
+  /* children first: D_i -= H_ci^T D_c^-1 H_ci over its children (adjacent
+   * nodes, taken last to first), then D_i^-1 */
   for (int q = t->node_count - 1; q >= 0; --q) {
     tb_jt_node* n = &t->nodes[q];
+    if (n->body) body_mass(t, ctx, n, q, use_bias);
+    for (int c = n->children_end - 1; c >= n->children; --c) {
+      const tb_jt_node* child = &t->nodes[c];
+      BY_SHAPE(child->dof, n->dof, eliminate, child, n);
+    }
     invert(n->d, n->dof);
-    if (n->parent < 0) continue;
-    tb_jt_node* p = &t->nodes[n->parent];
-    BY_SHAPE(n->dof, p->dof, eliminate, n, p);
+  }
+}
+
+/* The right-hand side of a joint node's k rows (k a constant where inlined). */
+static inline __attribute__((always_inline)) void joint_rhs(int k, const tb_joint_tree* t, const tb_step_context* ctx,
+                                                            tb_jt_node* n, double bias) {
+  const tb_solver_body* a = &ctx->states[n->sa];
+  const tb_solver_body* b = &ctx->states[n->sb];
+  UNROLLED for (int r = 0; r < k; ++r) {
+    const float* ja = n->rows.ja[r];
+    const float* jb = n->rows.jb[r];
+    double cdot = (double)jb[0] * b->v.x + (double)jb[1] * b->v.y + (double)jb[2] * b->w -
+                  ((double)ja[0] * a->v.x + (double)ja[1] * a->v.y + (double)ja[2] * a->w);
+    double compliant = 0.0;
+    UNROLLED for (int s = 0; s < k; ++s) compliant += t->compliance * n->kc[r][s] * (double)n->acc[s];
+    double correction = bias * (double)n->rows.c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
+    correction = correction > most ? most : correction < -most ? -most : correction;
+    n->y[r] = cdot + correction + compliant;
   }
 }
 
 /* The right-hand side of one node at the current velocities and impulses. */
-static void node_rhs(tb_world* w, tb_step_context* ctx, int i, double bias) {
-  tb_joint_tree* t = &w->joint_tree;
+static void node_rhs(const tb_joint_tree* t, const tb_step_context* ctx, int i, double bias) {
   tb_jt_node* n = &t->nodes[i];
   if (!n->body) {
-    const tb_solver_body* a = &ctx->states[n->sa];
-    const tb_solver_body* b = &ctx->states[n->sb];
-    for (int r = 0; r < n->dof; ++r) {
-      const float* ja = n->rows.ja[r];
-      const float* jb = n->rows.jb[r];
-      double cdot = (double)jb[0] * b->v.x + (double)jb[1] * b->v.y + (double)jb[2] * b->w -
-                    ((double)ja[0] * a->v.x + (double)ja[1] * a->v.y + (double)ja[2] * a->w);
-      double compliant = 0.0;
-      for (int s = 0; s < n->dof; ++s) compliant += t->compliance * n->kc[r][s] * (double)n->acc[s];
-      double correction = bias * (double)n->rows.c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
-      correction = correction > most ? most : correction < -most ? -most : correction;
-      n->y[r] = cdot + correction + compliant;
+    switch (n->dof) {
+      case 1: joint_rhs(1, t, ctx, n, bias); break;
+      case 2: joint_rhs(2, t, ctx, n, bias); break;
+      default: joint_rhs(3, t, ctx, n, bias); break;
     }
     return;
   }
@@ -570,20 +603,22 @@ static bool tree_active(const tb_step_context* ctx, const tb_joint_tree* t, int 
   return false;
 }
 
-/* One tree, nodes [from, to): the right-hand sides, the two substitutions
- * through the factorisation, and the velocity changes and impulses. */
+/* One tree, nodes [from, to): the two substitutions through the
+ * factorisation, and the velocity changes and impulses. */
 static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
-  for (int q = from; q < to; ++q) node_rhs(w, ctx, q, bias);
-  /* forward, children first: y_p -= H_ip^T D_i^-1 y_i */
+  /* forward, children first: y_i = b_i - sum_c H_ci^T D_c^-1 y_c */
   for (int q = to - 1; q >= from; --q) {
-    const tb_jt_node* n = &t->nodes[q];
-    if (n->parent < 0) continue;
-    tb_jt_node* p = &t->nodes[n->parent];
-    BY_SHAPE(n->dof, p->dof, forward, n, p);
+    tb_jt_node* n = &t->nodes[q];
+    node_rhs(t, ctx, q, bias);
+    for (int c = n->children_end - 1; c >= n->children; --c) {
+      const tb_jt_node* child = &t->nodes[c];
+      BY_SHAPE(child->dof, n->dof, forward, child, n);
+    }
   }
-  /* back, parents first: y becomes the solution */
+  /* back, parents first: y becomes the solution x_i = D_i^-1 (y_i - H_ip x_p),
+   * and with it a body's velocity change or a joint's impulses */
   for (int q = from; q < to; ++q) {
     tb_jt_node* n = &t->nodes[q];
     if (n->parent >= 0) {
@@ -592,10 +627,6 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
     } else {
       BY_SHAPE(n->dof, 3, back, n, NULL);
     }
-  }
-  /* the velocity changes of the bodies and the impulses of the rows */
-  for (int q = from; q < to; ++q) {
-    tb_jt_node* n = &t->nodes[q];
     if (!n->body) {
       for (int r = 0; r < n->dof; ++r) n->acc[r] += (float)n->y[r];
       continue;

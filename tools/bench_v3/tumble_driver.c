@@ -9,9 +9,11 @@
  * SCENE pyramid_base_N (N in 1..100) is large_pyramid with a base of N boxes
  * (the small-pyramid scaling rows; sleeping off, 500 steps by default).
  * prints: tumble SCENE STEPS MS_PER_STEP bodies B shapes S joints J pairs P
- * touching T awake A bytes N body_bytes BB contact_bytes CB (the world's bytes,
- * and its body and contact parts per body and per contact) */
+ * touching T awake A bytes N body_bytes BB contact_bytes CB hash H (the world's
+ * bytes, its body and contact parts per body and per contact, and the world
+ * hash after the last step: equal hashes, equal results) */
 #define _POSIX_C_SOURCE 200809L
+#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,10 +81,10 @@ int main(int argc, char** argv) {
   }
   printf(
       "tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d bytes %zu"
-      " body_bytes %.0f contact_bytes %.0f\n",
+      " body_bytes %.0f contact_bytes %.0f hash %016" PRIx64 "\n",
       argv[1], steps, ms, c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count,
       c.awake_body_count, mem.total, c.body_count > 0 ? (double)mem.bodies / c.body_count : 0.0,
-      c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0);
+      c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0, tb_world_hash(world));
   tb_destroy_world(world);
   return 0;
 }
