@@ -192,6 +192,29 @@ static bool same_topology(tb_world* w, const tb_step_context* ctx) {
   return true;
 }
 
+/* Breadth-first from root over the nodes whose parent is `unvisited`: sets
+ * their parents (-1 for the root) and children ranges, writes them to the
+ * order from `at` on and returns where they end. */
+static int breadth_first(tb_joint_tree* t, int body_nodes, int root, int unvisited, int at) {
+  t->nodes[root].parent = -1;
+  t->order[at] = root;
+  int end = at + 1;
+  for (int q = at; q < end; ++q) {
+    int i = t->order[q];
+    tb_jt_node* n = &t->nodes[i];
+    int around = i < body_nodes ? n->count : 2;
+    n->children = end;
+    for (int e = 0; e < around; ++e) {
+      int m = i < body_nodes ? t->edges[n->first + e] : (e == 0 ? n->a : n->b);
+      if (m < 0 || t->nodes[m].parent != unvisited) continue;
+      t->nodes[m].parent = i;
+      t->order[end++] = m;
+    }
+    n->children_end = end;
+  }
+  return end;
+}
+
 bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   tb_joint_tree* t = &w->joint_tree;
   int bodies = w->awake_count, joints = w->step_joint_count;
@@ -279,29 +302,27 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       if (ends[e] >= 0) t->edges[t->nodes[ends[e]].first + t->nodes[ends[e]].count++] = n;
   }
 
-  /* breadth-first from each unvisited node: parents before children; each
-   * tree is one run of the order (its start in components) */
+  /* Each tree breadth-first from its centre: parents before children, each
+   * tree one run of the order (its start in components). The centre (the
+   * middle of a longest path, found by two searches) gives the fewest levels:
+   * the factorisation and the substitutions are chains of dependent small
+   * solves from the leaves to the root and back, and the branches below the
+   * root run side by side (a chain rooted at one end is one long chain). */
   for (int n = 0; n < t->node_count; ++n) t->nodes[n].parent = -2;
   int ordered = 0;
   t->component_count = 0;
-  for (int root = 0; root < t->node_count; ++root) {
-    if (t->nodes[root].parent != -2) continue;
+  for (int start = 0; start < t->node_count; ++start) {
+    if (t->nodes[start].parent != -2) continue;
+    int end = breadth_first(t, body_nodes, start, -2, ordered);
+    for (int q = ordered; q < end; ++q) t->nodes[t->order[q]].parent = -3;
+    int far = t->order[end - 1]; /* a farthest node from start: one end of a longest path */
+    breadth_first(t, body_nodes, far, -3, ordered);
+    int length = 0, centre = t->order[end - 1]; /* the other end */
+    for (int i = centre; t->nodes[i].parent >= 0; i = t->nodes[i].parent) length += 1;
+    for (int k = 0; k < length / 2; ++k) centre = t->nodes[centre].parent;
+    for (int q = ordered; q < end; ++q) t->nodes[t->order[q]].parent = -4;
     t->components[t->component_count++] = ordered;
-    t->nodes[root].parent = -1;
-    t->order[ordered++] = root;
-    for (int q = ordered - 1; q < ordered; ++q) {
-      int i = t->order[q];
-      tb_jt_node* n = &t->nodes[i];
-      int around = i < body_nodes ? n->count : 2;
-      n->children = ordered;
-      for (int e = 0; e < around; ++e) {
-        int m = i < body_nodes ? t->edges[n->first + e] : (e == 0 ? n->a : n->b);
-        if (m < 0 || t->nodes[m].parent != -2) continue;
-        t->nodes[m].parent = i;
-        t->order[ordered++] = m;
-      }
-      n->children_end = ordered;
-    }
+    ordered = breadth_first(t, body_nodes, centre, -4, ordered);
   }
   t->components[t->component_count] = ordered;
 
