@@ -83,7 +83,8 @@ typedef struct tb_jt_node {
   int dof;        /* 3 for a body, the row count for a joint */
   int ref;        /* body: solver index; joint: joint index */
   bool body;      /* a body node (else a joint's rows) */
-  double y[3];    /* right-hand side, then the solution */
+  int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
+  double y[3];                /* right-hand side, then the solution */
   double d[3][3]; /* D, then D^-1 */
   float hp[3][3]; /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
   double stiff;   /* body: the geometric stiffness added to its inertia */
@@ -95,9 +96,8 @@ typedef struct tb_jt_node {
   float acc[3];
   double kc[3][3]; /* joint: K_c, the row block's own effective-mass inverse (G = g K_c) */
   tb_rigid_rows rows;
-  int first;              /* body: its first edge in tree->edges */
-  int count;              /* body: its edge count */
-  int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
+  int first; /* body: its first edge in tree->edges */
+  int count; /* body: its edge count */
   int a, b;  /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
 } tb_jt_node;
 
