@@ -77,48 +77,70 @@ void tb_body_keep_in_world(tb_body* b) {
 
 /* Extents about the centre of mass: the farthest surface point (rotation seen
  * as speed, for sleep and sweeps) and the thinnest half-thickness (how far the
- * body may move in a step before it could pass through something). */
+ * body may move in a step before it could pass through something); one
+ * shape's here, the body's the largest far and the least thin of its shapes. */
+static void shape_extents(const tb_body* b, const tb_shape* s, float* far_out, float* thin_out) {
+  float far = 0.0f, thin = tb_units.linear_slop;
+  switch (s->type) {
+    case TB_SHAPE_CIRCLE:
+      far = tb_length(tb_sub(s->geom.circle.center, b->local_center)) + s->geom.circle.radius;
+      thin = s->geom.circle.radius;
+      break;
+    case TB_SHAPE_CAPSULE:
+      far = fmaxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
+                  tb_length(tb_sub(s->geom.capsule.center2, b->local_center))) +
+            s->geom.capsule.radius;
+      thin = s->geom.capsule.radius;
+      break;
+    case TB_SHAPE_SEGMENT:
+      far = fmaxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
+                  tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
+      break;
+    case TB_SHAPE_CHAIN_SEGMENT:
+      far = fmaxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
+                  tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
+      break;
+    case TB_SHAPE_POLYGON: {
+      const tb_polygon* p = &s->geom.polygon;
+      thin = TB_MAX_LENGTH;
+      for (int k = 0; k < p->count; ++k) {
+        far = fmaxf(far, tb_length(tb_sub(p->vertices[k], b->local_center)));
+        thin = fminf(thin, tb_dot(p->normals[k], tb_sub(p->vertices[k], p->centroid))); /* centroid to edge */
+      }
+      far += p->radius;
+      thin += p->radius;
+      break;
+    }
+  }
+  *far_out = far;
+  *thin_out = thin;
+}
+
 static void update_extents(tb_world* w, tb_body* b) {
   float max_extent = 0.0f, min_extent = TB_MAX_LENGTH;
   for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
-    const tb_shape* s = tb_shape_at(w, i);
-    float far = 0.0f, thin = tb_units.linear_slop;
-    switch (s->type) {
-      case TB_SHAPE_CIRCLE:
-        far = tb_length(tb_sub(s->geom.circle.center, b->local_center)) + s->geom.circle.radius;
-        thin = s->geom.circle.radius;
-        break;
-      case TB_SHAPE_CAPSULE:
-        far = fmaxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
-                    tb_length(tb_sub(s->geom.capsule.center2, b->local_center))) +
-              s->geom.capsule.radius;
-        thin = s->geom.capsule.radius;
-        break;
-      case TB_SHAPE_SEGMENT:
-        far = fmaxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
-                    tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
-        break;
-      case TB_SHAPE_CHAIN_SEGMENT:
-        far = fmaxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
-                    tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
-        break;
-      case TB_SHAPE_POLYGON: {
-        const tb_polygon* p = &s->geom.polygon;
-        thin = TB_MAX_LENGTH;
-        for (int k = 0; k < p->count; ++k) {
-          far = fmaxf(far, tb_length(tb_sub(p->vertices[k], b->local_center)));
-          thin = fminf(thin, tb_dot(p->normals[k], tb_sub(p->vertices[k], p->centroid))); /* centroid to edge */
-        }
-        far += p->radius;
-        thin += p->radius;
-        break;
-      }
-    }
+    float far, thin;
+    shape_extents(b, tb_shape_at(w, i), &far, &thin);
     max_extent = fmaxf(max_extent, far);
     min_extent = fminf(min_extent, thin);
   }
   b->max_extent = max_extent;
   b->min_extent = min_extent;
+}
+
+void tb_body_add_shape_mass(tb_world* w, tb_body* b, const tb_shape* s) {
+  /* A static body has no mass, no velocity and its centre at its origin, so
+   * a new shape changes only its extents, and only by its own (a level of
+   * thousands of boxes on one static body was built in time quadratic in its
+   * shapes). */
+  if (b->type == TB_STATIC_BODY && !b->mass_overridden && b->local_center.x == 0.0f && b->local_center.y == 0.0f) {
+    float far, thin;
+    shape_extents(b, s, &far, &thin);
+    b->max_extent = fmaxf(b->max_extent, far);
+    b->min_extent = fminf(b->min_extent, thin);
+    return;
+  }
+  tb_body_update_mass(w, b);
 }
 
 void tb_body_update_mass(tb_world* w, tb_body* b) {

@@ -64,10 +64,14 @@ typedef struct tb_body {
 } tb_body;
 
 struct tb_world;
+struct tb_shape;
 
 /* Recomputes mass, centre and inertia from the shapes (parallel-axis theorem),
  * keeping the body origin fixed and the centre-of-mass velocity consistent. */
 void tb_body_update_mass(struct tb_world* world, tb_body* body);
+/* tb_body_update_mass after `shape` joined the body's shapes: the same, in
+ * time independent of its other shapes where the body has no mass. */
+void tb_body_add_shape_mass(struct tb_world* world, tb_body* body, const struct tb_shape* shape);
 /* angle + *residual + turned, rounded to the nearest float; *residual gets
  * what the rounding dropped (the sum is formed in double: exact to far below
  * a float step for any angle within the accepted 1e6 rad). */

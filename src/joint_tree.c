@@ -79,16 +79,16 @@
  * first (a body node reads nothing past stiff), then a joint's rows, then
  * what only the build and the factorisation read. */
 typedef struct tb_jt_node {
-  int parent;     /* node index, -1 for a root */
-  int dof;        /* 3 for a body, the row count for a joint */
-  int ref;        /* body: solver index; joint: joint index */
-  bool body;      /* a body node (else a joint's rows) */
+  int parent;                 /* node index, -1 for a root */
+  int dof;                    /* 3 for a body, the row count for a joint */
+  int ref;                    /* body: solver index; joint: joint index */
+  bool body;                  /* a body node (else a joint's rows) */
   int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
   double y[3];                /* right-hand side, then the solution */
-  double d[3][3]; /* D, then D^-1 */
-  float hp[3][3]; /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
-  double stiff;   /* body: the geometric stiffness added to its inertia */
-  int sa, sb;     /* joint: the solver bodies of A and B (the passes read them without the joint) */
+  double d[3][3];             /* D, then D^-1 */
+  float hp[3][3];             /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
+  double stiff;               /* body: the geometric stiffness added to its inertia */
+  int sa, sb;                 /* joint: the solver bodies of A and B (the passes read them without the joint) */
   /* joint: the rows' accumulated impulses (*rows.impulse[r]), kept here while
    * the substep's passes add to them: the joint records are scattered, and
    * reading them in every pass missed the cache. Loaded by the biased

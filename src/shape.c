@@ -101,7 +101,7 @@ static tb_shape_id create_shape(tb_body_id body_id, const tb_shape_def* def, tb_
   int index = tb_shape_attach(w, body_id.index1 - 1, &proto, fn);
   if (index < 0) return null_id;
   tb_body* owner = tb_body_at(w, body_id.index1 - 1);
-  tb_body_update_mass(w, owner);
+  tb_body_add_shape_mass(w, owner, tb_shape_at(w, index));
   /* a new shape wakes a body that touches or is jointed to something; a body
    * created asleep and not yet linked keeps sleeping while it gets its shapes */
   if (owner->contact_count > 0 || owner->joint_count > 0) tb_wake_body(w, body_id.index1 - 1);

@@ -768,6 +768,43 @@ START_TEST(deterministic) {
 }
 END_TEST
 
+/* A static body's extents grow shape by shape without a pass over its other
+ * shapes (body.c, tb_body_add_shape_mass): after each new shape they are
+ * what the full recomputation gives, and the closed forms of the shapes. */
+START_TEST(static_extents_follow_each_new_shape) {
+  tb_world_def wd = tb_default_world_def();
+  tb_world_id id = tb_create_world(&wd);
+  tb_body_def bd = tb_default_body_def();
+  bd.position = (tb_vec2){3.0f, -2.0f};
+  bd.angle = 0.7f;
+  tb_body_id ground = tb_create_body(id, &bd);
+  tb_shape_def sd = tb_default_shape_def();
+  tb_world* w = internal(id);
+  tb_body* b = body_of(ground);
+  /* box of half 1 x 0.25 centred at (10, 0): farthest corner |(11, 0.25)|, thinnest 0.25 */
+  tb_polygon box;
+  tb_make_offset_box(1.0f, 0.25f, (tb_vec2){10.0f, 0.0f}, 0.0f, &box);
+  tb_circle circle = {{-2.0f, 0.0f}, 0.5f};                 /* far 2.5, thin 0.5 */
+  tb_capsule capsule = {{0.0f, 3.0f}, {0.0f, 20.0f}, 0.1f}; /* far 20.1, thin 0.1 */
+  tb_segment segment = {{-30.0f, 0.0f}, {-30.0f, 1.0f}};    /* far |(-30, 1)|, thin linear slop */
+  const float far[4] = {sqrtf(121.0f + 0.0625f), sqrtf(121.0f + 0.0625f), 20.1f, sqrtf(901.0f)};
+  const float thin[4] = {0.25f, 0.25f, 0.1f, fminf(0.1f, tb_get_length_units_per_meter() * 0.005f)};
+  for (int k = 0; k < 4; ++k) {
+    if (k == 0) ck_assert(tb_shape_is_valid(tb_create_polygon_shape(ground, &sd, &box)));
+    if (k == 1) ck_assert(tb_shape_is_valid(tb_create_circle_shape(ground, &sd, &circle)));
+    if (k == 2) ck_assert(tb_shape_is_valid(tb_create_capsule_shape(ground, &sd, &capsule)));
+    if (k == 3) ck_assert(tb_shape_is_valid(tb_create_segment_shape(ground, &sd, &segment)));
+    float grown_max = b->max_extent, grown_min = b->min_extent;
+    ck_assert_float_eq_tol(grown_max, far[k], 1e-5f * far[k]);
+    ck_assert_float_eq_tol(grown_min, thin[k], 1e-6f);
+    tb_body_update_mass(w, b); /* the pass over every shape */
+    ck_assert_float_eq(b->max_extent, grown_max);
+    ck_assert_float_eq(b->min_extent, grown_min);
+  }
+  tb_destroy_world(id);
+}
+END_TEST
+
 static Suite* continuous_suite(void) {
   Suite* s = suite_create("continuous");
   TCase* pass = tcase_create("pass");
@@ -781,6 +818,7 @@ static Suite* continuous_suite(void) {
   tcase_add_test(pass, bullets_see_moving_bodies);
   tcase_add_test(pass, rotation_is_swept);
   tcase_add_test(pass, swing_about_a_centre_set_by_hand_is_swept);
+  tcase_add_test(pass, static_extents_follow_each_new_shape);
   suite_add_tcase(s, pass);
   TCase* world = tcase_create("world");
   tcase_set_timeout(world, 30);
