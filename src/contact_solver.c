@@ -774,18 +774,11 @@ static inline __attribute__((always_inline)) void refresh_arms(tb_wide_contact* 
 }
 
 /* The relax passes' record of a block's lanes (relax_activity.h): the
- * bodies of the lanes noted changed in this pass. Branch-free: a body not to
- * note (or the static dummy) writes the sink. */
+ * bodies of the lanes noted changed in this pass. */
 static inline __attribute__((always_inline)) void note_lanes(tb_step_context* ctx, const tb_wide_contact* c,
                                                              tb_i4 noted) {
-  tb_i4 a, b, stat = {ctx->static_index, ctx->static_index, ctx->static_index, ctx->static_index};
-  tb_i4 sink = stat + 1;
-  memcpy(&a, c->a, sizeof a);
-  memcpy(&b, c->b, sizeof b);
-  a = (a & (noted & (a != stat))) | (sink & ~(noted & (a != stat)));
-  b = (b & (noted & (b != stat))) | (sink & ~(noted & (b != stat)));
-  int32_t* changed_in = ctx->changed_in;
-  for (int lane = 0; lane < 4; ++lane) changed_in[a[lane]] = changed_in[b[lane]] = ctx->relax_pass;
+  tb_relax_note_lanes(ctx, c->a, noted);
+  tb_relax_note_lanes(ctx, c->b, noted);
 }
 
 /* Always inlined: each kind of pass gets a copy without the others'

@@ -262,8 +262,9 @@ void tb_wide_joints_warm_start(tb_world* w, tb_step_context* ctx) {
  * change at a body's farthest point, |dv.x| + |dv.y| + |dw| reach. */
 static void note_moved(tb_step_context* ctx, const int32_t* s, const wide_body* before, const wide_body* after) {
   tb_f4 dvx = after->vx - before->vx, dvy = after->vy - before->vy, dw = after->w - before->w;
-  for (int lane = 0; lane < 4; ++lane)
-    tb_relax_note(ctx, s[lane], fabsf(dvx[lane]) + fabsf(dvy[lane]) + fabsf(dw[lane]) * ctx->reach[s[lane]]);
+  const float* reach = ctx->reach;
+  tb_f4 speed = fabs4(dvx) + fabs4(dvy) + fabs4(dw) * (tb_f4){reach[s[0]], reach[s[1]], reach[s[2]], reach[s[3]]};
+  tb_relax_note_lanes(ctx, s, speed > splat(TB_RELAX_TOLERANCE));
 }
 
 /* Without warm starting: every impulse of the lanes from zero, the trees'

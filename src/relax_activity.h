@@ -20,9 +20,11 @@
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "solver.h"
 #include "units.h"
+#include "wide.h"
 
 #define TB_RELAX_TOLERANCE tb_meters(1e-5f) /* m/s: 10 um in a second */
 
@@ -41,11 +43,24 @@ static inline float tb_relax_speed(const tb_step_context* ctx, int s, tb_vec2 dv
   return fabsf(dv.x) + fabsf(dv.y) + fabsf(dw) * ctx->reach[s];
 }
 
+/* Records the solver bodies s[] of the lanes where noted is set, without a
+ * branch: a lane not noted, or the static dummy's, writes the sink entry
+ * after the dummy's (tb_solve keeps both). */
+static inline __attribute__((always_inline)) void tb_relax_note_lanes(tb_step_context* ctx, const int32_t* s,
+                                                                      tb_i4 noted) {
+  tb_i4 index, stat = {ctx->static_index, ctx->static_index, ctx->static_index, ctx->static_index};
+  memcpy(&index, s, sizeof index);
+  tb_i4 keep = noted & (index != stat);
+  index = (index & keep) | ((stat + 1) & ~keep);
+  int32_t* changed_in = ctx->changed_in;
+  for (int lane = 0; lane < 4; ++lane) changed_in[index[lane]] = ctx->relax_pass;
+}
+
 /* Whether a later relax pass solves a block of four lanes with solver bodies
  * a[] and b[]: whether one of them is active (the static dummy's entry is
  * never written, 0). */
 static inline __attribute__((always_inline)) bool tb_relax_lanes_active(const tb_step_context* ctx, const int32_t* a,
-                                                                       const int32_t* b) {
+                                                                        const int32_t* b) {
   const int32_t* changed_in = ctx->changed_in;
   int32_t since = ctx->relax_pass - 1;
   int active = 0;
