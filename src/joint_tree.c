@@ -101,6 +101,16 @@ typedef struct tb_jt_node {
   int a, b;  /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
 } tb_jt_node;
 
+/* A node's place in the graph, as the build finds it (before the nodes are
+ * sorted): the fields of tb_jt_node that say so, in a record of 44 bytes
+ * instead of 400, which the build searches and then writes out in order. */
+typedef struct tb_jt_link {
+  int parent, dof, ref;
+  int a, b, sa, sb;           /* joint */
+  int first, count;           /* body */
+  int children, children_end; /* after the breadth-first search */
+} tb_jt_link;
+
 /* What a step joint's place in the trees depends on: the joint, its solver
  * bodies and its rigid rows, and whether each body is a node that can turn
  * (flags); `in_tree` is the build's answer for it. */
@@ -114,7 +124,7 @@ typedef struct tb_jt_key {
 void tb_joint_tree_free(tb_joint_tree* t) {
   tb_mem_free(t->nodes, (size_t)t->node_capacity * sizeof *t->nodes);
   tb_mem_free(t->order, (size_t)t->order_capacity * sizeof *t->order);
-  tb_mem_free(t->spare, (size_t)t->spare_capacity * sizeof *t->spare);
+  tb_mem_free(t->links, (size_t)t->link_capacity * sizeof *t->links);
   tb_mem_free(t->place, (size_t)t->place_capacity * sizeof *t->place);
   tb_mem_free(t->body_scratch, (size_t)t->body_capacity * sizeof *t->body_scratch);
   tb_mem_free(t->edges, (size_t)t->edge_capacity * sizeof *t->edges);
@@ -145,11 +155,7 @@ static bool joint_fits(const tb_step_context* ctx, const tb_step_joint* j) {
 }
 
 static int add_node(tb_joint_tree* t, int dof, int ref) {
-  tb_jt_node* n = &t->nodes[t->node_count];
-  memset(n, 0, sizeof *n);
-  n->parent = -1;
-  n->dof = dof;
-  n->ref = ref;
+  t->links[t->node_count] = (tb_jt_link){.parent = -1, .dof = dof, .ref = ref, .a = -1, .b = -1};
   return t->node_count++;
 }
 
@@ -196,18 +202,19 @@ static bool same_topology(tb_world* w, const tb_step_context* ctx) {
  * their parents (-1 for the root) and children ranges, writes them to the
  * order from `at` on and returns where they end. */
 static int breadth_first(tb_joint_tree* t, int body_nodes, int root, int unvisited, int at) {
-  t->nodes[root].parent = -1;
+  tb_jt_link* links = t->links;
+  links[root].parent = -1;
   t->order[at] = root;
   int end = at + 1;
   for (int q = at; q < end; ++q) {
     int i = t->order[q];
-    tb_jt_node* n = &t->nodes[i];
+    tb_jt_link* n = &links[i];
     int around = i < body_nodes ? n->count : 2;
     n->children = end;
     for (int e = 0; e < around; ++e) {
       int m = i < body_nodes ? t->edges[n->first + e] : (e == 0 ? n->a : n->b);
-      if (m < 0 || t->nodes[m].parent != unvisited) continue;
-      t->nodes[m].parent = i;
+      if (m < 0 || links[m].parent != unvisited) continue;
+      links[m].parent = i;
       t->order[end++] = m;
     }
     n->children_end = end;
@@ -228,7 +235,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
   }
   if (!tb_array_reserve((void**)&t->nodes, &t->node_capacity, bodies + joints, sizeof *t->nodes) ||
       !tb_array_reserve((void**)&t->order, &t->order_capacity, bodies + joints, sizeof *t->order) ||
-      !tb_array_reserve((void**)&t->spare, &t->spare_capacity, bodies + joints, sizeof *t->spare) ||
+      !tb_array_reserve((void**)&t->links, &t->link_capacity, bodies + joints, sizeof *t->links) ||
       !tb_array_reserve((void**)&t->place, &t->place_capacity, bodies + joints, sizeof *t->place) ||
       !tb_array_reserve((void**)&t->body_scratch, &t->body_capacity, 2 * bodies, sizeof *t->body_scratch) ||
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges) ||
@@ -282,24 +289,24 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     const tb_step_joint* j = &info[k];
     if (!j->in_tree) continue;
     int n = add_node(t, j->rigid_rows, w->step_joints[k]);
-    t->nodes[n].a = is_node_body(ctx, j->solver_a) ? body_node[j->solver_a] : -1;
-    t->nodes[n].b = is_node_body(ctx, j->solver_b) ? body_node[j->solver_b] : -1;
-    t->nodes[n].sa = j->solver_a;
-    t->nodes[n].sb = j->solver_b;
-    if (t->nodes[n].a >= 0) t->nodes[t->nodes[n].a].count += 1;
-    if (t->nodes[n].b >= 0) t->nodes[t->nodes[n].b].count += 1;
+    t->links[n].a = is_node_body(ctx, j->solver_a) ? body_node[j->solver_a] : -1;
+    t->links[n].b = is_node_body(ctx, j->solver_b) ? body_node[j->solver_b] : -1;
+    t->links[n].sa = j->solver_a;
+    t->links[n].sb = j->solver_b;
+    if (t->links[n].a >= 0) t->links[t->links[n].a].count += 1;
+    if (t->links[n].b >= 0) t->links[t->links[n].b].count += 1;
   }
   /* body -> joint edges (CSR) */
   int at = 0;
   for (int b = 0; b < body_nodes; ++b) {
-    t->nodes[b].first = at;
-    at += t->nodes[b].count;
-    t->nodes[b].count = 0;
+    t->links[b].first = at;
+    at += t->links[b].count;
+    t->links[b].count = 0;
   }
   for (int n = body_nodes; n < t->node_count; ++n) {
-    int ends[2] = {t->nodes[n].a, t->nodes[n].b};
+    int ends[2] = {t->links[n].a, t->links[n].b};
     for (int e = 0; e < 2; ++e)
-      if (ends[e] >= 0) t->edges[t->nodes[ends[e]].first + t->nodes[ends[e]].count++] = n;
+      if (ends[e] >= 0) t->edges[t->links[ends[e]].first + t->links[ends[e]].count++] = n;
   }
 
   /* Each tree breadth-first from its centre: parents before children, each
@@ -308,45 +315,48 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
    * the factorisation and the substitutions are chains of dependent small
    * solves from the leaves to the root and back, and the branches below the
    * root run side by side (a chain rooted at one end is one long chain). */
-  for (int n = 0; n < t->node_count; ++n) t->nodes[n].parent = -2;
+  for (int n = 0; n < t->node_count; ++n) t->links[n].parent = -2;
   int ordered = 0;
   t->component_count = 0;
   for (int start = 0; start < t->node_count; ++start) {
-    if (t->nodes[start].parent != -2) continue;
+    if (t->links[start].parent != -2) continue;
     int end = breadth_first(t, body_nodes, start, -2, ordered);
-    for (int q = ordered; q < end; ++q) t->nodes[t->order[q]].parent = -3;
+    for (int q = ordered; q < end; ++q) t->links[t->order[q]].parent = -3;
     int far = t->order[end - 1]; /* a farthest node from start: one end of a longest path */
     breadth_first(t, body_nodes, far, -3, ordered);
     int length = 0, centre = t->order[end - 1]; /* the other end */
-    for (int i = centre; t->nodes[i].parent >= 0; i = t->nodes[i].parent) length += 1;
-    for (int k = 0; k < length / 2; ++k) centre = t->nodes[centre].parent;
-    for (int q = ordered; q < end; ++q) t->nodes[t->order[q]].parent = -4;
+    for (int i = centre; t->links[i].parent >= 0; i = t->links[i].parent) length += 1;
+    for (int k = 0; k < length / 2; ++k) centre = t->links[centre].parent;
+    for (int q = ordered; q < end; ++q) t->links[t->order[q]].parent = -4;
     t->components[t->component_count++] = ordered;
     ordered = breadth_first(t, body_nodes, centre, -4, ordered);
   }
   t->components[t->component_count] = ordered;
 
-  /* The nodes are stored in that order (node q is order[q]), so that every
-   * sweep of the solve walks them front to back or back to front. */
+  /* The nodes are written in that order (node q is order[q]), so that every
+   * sweep of the solve walks them front to back or back to front: their
+   * places in the graph, and y zeroed (a substitution reads all three); the
+   * rest the factorisation and the right-hand sides write before they read. */
   for (int q = 0; q < ordered; ++q) t->place[t->order[q]] = q;
   for (int e = 0; e < at; ++e) t->edges[e] = t->place[t->edges[e]];
   for (int q = 0; q < ordered; ++q) {
-    tb_jt_node* n = &t->spare[q];
     int old = t->order[q];
-    *n = t->nodes[old];
+    const tb_jt_link* l = &t->links[old];
+    tb_jt_node* n = &t->nodes[q];
+    n->parent = l->parent >= 0 ? t->place[l->parent] : -1;
+    n->dof = l->dof;
+    n->ref = l->ref;
     n->body = old < body_nodes;
-    if (n->parent >= 0) n->parent = t->place[n->parent];
-    if (!n->body) {
-      if (n->a >= 0) n->a = t->place[n->a];
-      if (n->b >= 0) n->b = t->place[n->b];
-    }
+    n->children = l->children;
+    n->children_end = l->children_end;
+    n->y[0] = n->y[1] = n->y[2] = 0.0;
+    n->first = l->first;
+    n->count = l->count;
+    n->sa = l->sa;
+    n->sb = l->sb;
+    n->a = !n->body && l->a >= 0 ? t->place[l->a] : -1;
+    n->b = !n->body && l->b >= 0 ? t->place[l->b] : -1;
   }
-  struct tb_jt_node* sorted = t->spare;
-  int sorted_capacity = t->spare_capacity;
-  t->spare = t->nodes;
-  t->spare_capacity = t->node_capacity;
-  t->nodes = sorted;
-  t->node_capacity = sorted_capacity;
   /* the keys' answers, for the next steps' same_topology (not when the keys
    * could not grow: out of memory, every step builds) */
   if (t->key_capacity >= joints) {
@@ -683,7 +693,7 @@ void tb_joint_tree_store(tb_world* w) {
 
 size_t tb_joint_tree_bytes(const tb_joint_tree* t) {
   return (size_t)t->node_capacity * sizeof *t->nodes + (size_t)t->order_capacity * sizeof *t->order +
-         (size_t)t->spare_capacity * sizeof *t->spare + (size_t)t->place_capacity * sizeof *t->place +
+         (size_t)t->link_capacity * sizeof *t->links + (size_t)t->place_capacity * sizeof *t->place +
          (size_t)t->body_capacity * sizeof *t->body_scratch + (size_t)t->edge_capacity * sizeof *t->edges +
          (size_t)t->component_capacity * sizeof *t->components + (size_t)t->key_capacity * sizeof *t->keys;
 }

@@ -10,14 +10,15 @@
 #include "solver.h"
 
 struct tb_jt_node;
+struct tb_jt_link;
 struct tb_jt_key;
 
 /* Step scratch, grown as needed and kept by the world. */
 typedef struct tb_joint_tree {
   struct tb_jt_node* nodes;
   int node_count, node_capacity;
-  struct tb_jt_node* spare; /* the other node buffer (the build sorts the nodes into it) */
-  int spare_capacity;
+  struct tb_jt_link* links; /* the build's: the nodes' places in the graph, before they are sorted */
+  int link_capacity;
   int* order; /* the build's breadth-first order, parents before children; the nodes are then stored in it */
   int order_capacity;
   int* place; /* the build's: where each node goes in that order */
