@@ -544,19 +544,16 @@ static void body_mass(const tb_joint_tree* t, const tb_step_context* ctx, tb_jt_
   n->d[2][2] = 1.0 / (double)s->inv_inertia + n->stiff;
 }
 
-/* The factorisation of the system at the current positions: every block and
- * D^-1 (children first). It depends on the positions (the rows) and on the
- * pass kind (compliance, geometric stiffness), not on the velocities, so the
- * relax passes of one substep share it (see tb_joint_tree_solve). */
-static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
+/* What a factorisation reads besides the bodies' masses, for every tree: the
+ * joints' blocks -G = -g K_c (and, new positions, their rows), the
+ * accumulated impulses (the biased pass, after tb_joint_tree_store), and a
+ * body's H from its parent joint's rows (parents first). */
+static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   double g = use_bias ? (double)t->softness.impulse_scale / (double)t->softness.mass_scale : TB_TREE_RELAX_COMPLIANCE;
   bool fresh = t->rows_for != ctx->position_updates;
   t->rows_for = ctx->position_updates;
   t->compliance = g;
-  /* parents first: the joints' blocks -G = -g K_c (and, new positions, their
-   * rows), the accumulated impulses (the biased factorisation, after
-   * tb_joint_tree_store), and a body's H from its parent joint's rows */
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
     if (n->body) {
@@ -571,9 +568,16 @@ static void factor(tb_world* w, tb_step_context* ctx, bool use_bias) {
     for (int r = 0; r < k; ++r)
       for (int s = 0; s < k; ++s) n->d[r][s] = -g * n->kc[r][s];
   }
-  /* children first: D_i -= H_ci^T D_c^-1 H_ci over its children (adjacent
-   * nodes, taken last to first), then D_i^-1 */
-  for (int q = t->node_count - 1; q >= 0; --q) {
+}
+
+/* The factorisation of the tree of nodes [from, to) at the current positions
+ * (prepared): every block and D^-1, children first, D_i -= H_ci^T D_c^-1
+ * H_ci over its children (adjacent nodes, taken last to first). It depends on
+ * the positions (the rows) and on the pass kind (compliance, geometric
+ * stiffness), not on the velocities, so the relax passes of one substep
+ * share it (see tb_joint_tree_solve). */
+static void factor(tb_joint_tree* t, const tb_step_context* ctx, int from, int to, bool use_bias) {
+  for (int q = to - 1; q >= from; --q) {
     tb_jt_node* n = &t->nodes[q];
     if (n->body) body_mass(t, ctx, n, q, use_bias);
     for (int c = n->children_end - 1; c >= n->children; --c) {
@@ -670,15 +674,78 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
   }
 }
 
+/* A tree of one joint (its bodies have no other tree joint), solved without
+ * the factorisation: the joint's K is its own K_c, so dl = -((1 + g) K_c)^-1
+ * r with r its right-hand side, and the bodies take M^-1 J^T dl. The same
+ * solve as the elimination (in another order of sums), in a fraction of its
+ * steps: a door on a hinge, a pendulum, a wheel on its axle. false, and
+ * nothing done, when a body needs the geometric stiffness (the general
+ * factorisation has it). */
+static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, int to, bool use_bias) {
+  int joint = -1;
+  for (int q = from; q < to; ++q)
+    if (!t->nodes[q].body) {
+      if (joint >= 0) return false; /* a body held by two joints */
+      joint = q;
+    }
+  tb_jt_node* n = &t->nodes[joint];
+  tb_solver_body* a = &ctx->states[n->sa];
+  tb_solver_body* b = &ctx->states[n->sb];
+  if (use_bias) {
+    double h = (double)ctx->h;
+    if ((n->a >= 0 && h * point_twist(n, true) > 1.0 / (double)a->inv_inertia) ||
+        (n->b >= 0 && h * point_twist(n, false) > 1.0 / (double)b->inv_inertia))
+      return false;
+  }
+  int k = n->dof;
+  double s[3][3] = {{0.0}};
+  for (int r = 0; r < k; ++r)
+    for (int c = 0; c < k; ++c) s[r][c] = n->kc[r][c] + t->compliance * n->kc[r][c];
+  invert(s, k);
+  switch (k) {
+    case 1: joint_rhs(1, t, ctx, n, use_bias ? (double)t->softness.bias_rate : 0.0); break;
+    case 2: joint_rhs(2, t, ctx, n, use_bias ? (double)t->softness.bias_rate : 0.0); break;
+    default: joint_rhs(3, t, ctx, n, use_bias ? (double)t->softness.bias_rate : 0.0); break;
+  }
+  double dl[3] = {0.0, 0.0, 0.0};
+  for (int r = 0; r < k; ++r) {
+    for (int c = 0; c < k; ++c) dl[r] -= s[r][c] * n->y[c];
+    n->acc[r] += (float)dl[r];
+  }
+  /* M^-1 J^T dl: -ja on A, +jb on B */
+  for (int side = 0; side < 2; ++side) {
+    if ((side == 0 ? n->a : n->b) < 0) continue; /* static or kinematic: not a node */
+    tb_solver_body* body = side == 0 ? a : b;
+    double p[3] = {0.0, 0.0, 0.0};
+    for (int r = 0; r < k; ++r) {
+      const float* j = side == 0 ? n->rows.ja[r] : n->rows.jb[r];
+      double l = side == 0 ? -dl[r] : dl[r];
+      for (int c = 0; c < 3; ++c) p[c] += (double)j[c] * l;
+    }
+    tb_vec2 dv = {(float)((double)body->inv_mass * p[0]), (float)((double)body->inv_mass * p[1])};
+    float dw = (float)((double)body->inv_inertia * p[2]);
+    body->v = (tb_vec2){body->v.x + dv.x, body->v.y + dv.y};
+    body->w += dw;
+    int index = side == 0 ? n->sa : n->sb;
+    if (!use_bias) tb_relax_note(ctx, index, tb_relax_speed(ctx, index, dv, dw));
+  }
+  return true;
+}
+
 void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   if (t->node_count == 0) return;
-  /* the relax passes after one position update see the same rows */
-  if (use_bias || t->factored_for != ctx->position_updates) factor(w, ctx, use_bias);
+  /* the relax passes after one position update see the same rows and share
+   * one factorisation (made in the first, which solves every tree) */
+  bool refactor = use_bias || t->factored_for != ctx->position_updates;
+  if (refactor) prepare(w, ctx, use_bias);
   t->factored_for = use_bias ? -1 : ctx->position_updates;
   for (int k = 0; k < t->component_count; ++k) {
     int from = t->components[k], to = t->components[k + 1];
-    if (use_bias || tree_active(ctx, t, from, to)) substitute(w, ctx, from, to, use_bias);
+    if (!use_bias && !tree_active(ctx, t, from, to)) continue;
+    if (to - from <= 3 && solve_lone_joint(t, ctx, from, to, use_bias)) continue;
+    if (refactor) factor(t, ctx, from, to, use_bias);
+    substitute(w, ctx, from, to, use_bias);
   }
 }
 

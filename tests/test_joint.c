@@ -172,6 +172,88 @@ START_TEST(pendulum_period_small_and_large) {
 }
 END_TEST
 
+/* A tree of one joint is solved without the factorisation (joint_tree.c,
+ * solve_lone_joint). Two free bodies of 1:8 mass joined by a revolute joint
+ * at a common point, spinning and drifting in zero gravity: the joint's
+ * impulses are equal and opposite, so linear momentum stays as it was to
+ * float rounding (1e-7 a step over 240 steps: tolerance 1e-4 of |p|), and
+ * their torques about the origin cancel, so angular momentum does too
+ * (tolerance 1e-3: the anchors' drift correction moves the bodies by the
+ * joint gap, < 1e-4 m, at arms of ~1 m); the gap stays below 1e-4 m. */
+static double angular_momentum(tb_body_id b) {
+  tb_vec2 c = tb_body_get_world_center(b), v = tb_body_get_linear_velocity(b);
+  double m = tb_body_get_mass(b), i = tb_body_get_rotational_inertia(b);
+  tb_vec2 lc = tb_body_get_local_center(b);
+  double i_center = i - m * ((double)lc.x * lc.x + (double)lc.y * lc.y); /* about the centre of mass */
+  return i_center * tb_body_get_angular_velocity(b) + m * ((double)c.x * v.y - (double)c.y * v.x);
+}
+
+START_TEST(lone_joint_conserves_momentum) {
+  tb_world_def wd = tb_default_world_def();
+  wd.gravity = (tb_vec2){0.0f, 0.0f};
+  wd.enable_sleep = false;
+  tb_world_id w = tb_create_world(&wd);
+  tb_body_id a = disc_body(w, (tb_vec2){-0.5f, 0.0f}, 0.25f, 1.0f);
+  tb_body_id b = disc_body(w, (tb_vec2){1.0f, 0.0f}, 0.5f, 2.0f);
+  tb_body_set_linear_velocity(a, (tb_vec2){0.3f, 2.0f});
+  tb_body_set_angular_velocity(a, 3.0f);
+  tb_body_set_linear_velocity(b, (tb_vec2){-0.1f, -0.5f});
+  tb_body_set_angular_velocity(b, -1.0f);
+  tb_revolute_joint_def jd = tb_default_revolute_joint_def();
+  jd.body_a = a;
+  jd.body_b = b;
+  jd.local_anchor_a = (tb_vec2){0.5f, 0.0f};
+  jd.local_anchor_b = (tb_vec2){-1.0f, 0.0f};
+  tb_joint_id j = tb_create_revolute_joint(w, &jd);
+  step(w, 1); /* the first step takes the joint's velocity constraint up */
+  double ma = tb_body_get_mass(a), mb = tb_body_get_mass(b);
+  tb_vec2 va = tb_body_get_linear_velocity(a), vb = tb_body_get_linear_velocity(b);
+  double px = ma * va.x + mb * vb.x, py = ma * va.y + mb * vb.y, l0 = angular_momentum(a) + angular_momentum(b);
+  step(w, 240);
+  va = tb_body_get_linear_velocity(a), vb = tb_body_get_linear_velocity(b);
+  double dpx = ma * va.x + mb * vb.x - px, dpy = ma * va.y + mb * vb.y - py;
+  double l1 = angular_momentum(a) + angular_momentum(b);
+  report("lone joint: |dp| %.3g of %.3g, dL %.3g of %.3g, gap %.3g m\n", hypot(dpx, dpy), hypot(px, py), l1 - l0, l0,
+         joint_gap(j));
+  ck_assert_double_lt(hypot(dpx, dpy), 1e-4 * hypot(px, py));
+  ck_assert_double_lt(fabs(l1 - l0), 1e-3 * fabs(l0));
+  ck_assert_double_lt(joint_gap(j), 1e-4);
+  tb_destroy_world(w);
+}
+END_TEST
+
+/* A lone joint whose body needs the geometric stiffness is solved by the
+ * factorisation in those substeps (solve_lone_joint declines), by the lone
+ * path in the others: a disc of radius 1 cm on a 1 m arm, I = m r^2 / 2 =
+ * 5e-5 m, needs it once the tension T makes h^2 T L > I (T > 0.29 m g; it
+ * starts at 0, horizontal, and reaches 3 m g at the bottom). Through both it
+ * keeps to its circle (gap < 1 mm) and loses < 2% of m g L in the swing. */
+START_TEST(lone_joint_with_light_bob_keeps_its_circle) {
+  tb_world_def wd = tb_default_world_def();
+  wd.gravity = (tb_vec2){0.0f, -10.0f};
+  wd.enable_sleep = false;
+  tb_world_id w = tb_create_world(&wd);
+  tb_body_id pivot = static_body(w, (tb_vec2){0.0f, 0.0f});
+  tb_body_id bob = disc_body(w, (tb_vec2){1.0f, 0.0f}, 0.01f, 1000.0f);
+  tb_revolute_joint_def jd = tb_default_revolute_joint_def();
+  jd.body_a = pivot;
+  jd.body_b = bob;
+  jd.local_anchor_b = (tb_vec2){-1.0f, 0.0f};
+  tb_joint_id j = tb_create_revolute_joint(w, &jd);
+  double m = tb_body_get_mass(bob), worst = 0.0;
+  for (int i = 0; i < 120; ++i) {
+    step(w, 1);
+    worst = fmax(worst, joint_gap(j));
+  }
+  tb_vec2 p = tb_body_get_position(bob), v = tb_body_get_linear_velocity(bob);
+  double e = 0.5 * m * ((double)v.x * v.x + (double)v.y * v.y) + m * 10.0 * p.y; /* 0 at the start */
+  report("light bob: gap %.3g m, energy %.3g of m g L = %.3g\n", worst, e, m * 10.0);
+  ck_assert_double_lt(worst, 1e-3);
+  ck_assert_double_lt(fabs(e), 2e-2 * m * 10.0);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* ---- chain ---------------------------------------------------------------- */
 
 /* The stiffness of a rigid joint. The rigid rows of the joints that form a
@@ -1753,6 +1835,8 @@ static Suite* joint_suite(void) {
   TCase* physics = tcase_create("physics");
   tcase_set_timeout(physics, 60);
   tcase_add_test(physics, pendulum_period_small_and_large);
+  tcase_add_test(physics, lone_joint_conserves_momentum);
+  tcase_add_test(physics, lone_joint_with_light_bob_keeps_its_circle);
   tcase_add_test(physics, hundred_link_chain_stays_connected);
   tcase_add_test(physics, hundred_link_chain_whip);
   tcase_add_test(physics, heavy_ball_on_light_chain);
