@@ -16,10 +16,18 @@ static int compare_points(const void* pa, const void* pb) {
   return 0;
 }
 
+/* (a - o) x (b - o), in double: > 0 when o, a, b turn left. In float the
+ * products of a subnormal difference (points on a line x = 0, one of them at
+ * x = -1e-45) underflowed to 0, a left turn read as collinear, and the hull
+ * dropped a corner (fuzz_hull: a 0.19 m square lost its corner at the origin
+ * and left the point 0.10 m outside). */
+static double turn(tb_vec2 o, tb_vec2 a, tb_vec2 b) {
+  return ((double)a.x - o.x) * ((double)b.y - o.y) - ((double)a.y - o.y) * ((double)b.x - o.x);
+}
+
 /* Distance of p from the line through a and b (a != b). */
-static float line_distance(tb_vec2 a, tb_vec2 b, tb_vec2 p) {
-  tb_vec2 e = tb_sub(b, a);
-  return fabsf(tb_cross(e, tb_sub(p, a))) / tb_length(e);
+static double line_distance(tb_vec2 a, tb_vec2 b, tb_vec2 p) {
+  return fabs(turn(a, b, p)) / hypot((double)b.x - a.x, (double)b.y - a.y);
 }
 
 /* Fills normals and centroid from counter-clockwise vertices. */
@@ -84,11 +92,11 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
 
   int h = 0;
   for (int i = 0; i < n; ++i) { /* lower chain */
-    while (h >= 2 && tb_cross(tb_sub(hull[h - 1], hull[h - 2]), tb_sub(pts[i], hull[h - 2])) <= 0.0f) --h;
+    while (h >= 2 && turn(hull[h - 2], hull[h - 1], pts[i]) <= 0.0) --h;
     hull[h++] = pts[i];
   }
   for (int i = n - 2, lower = h + 1; i >= 0; --i) { /* upper chain */
-    while (h >= lower && tb_cross(tb_sub(hull[h - 1], hull[h - 2]), tb_sub(pts[i], hull[h - 2])) <= 0.0f) --h;
+    while (h >= lower && turn(hull[h - 2], hull[h - 1], pts[i]) <= 0.0) --h;
     hull[h++] = pts[i];
   }
   h -= 1; /* the last point repeats the first */
@@ -98,7 +106,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
     removed = false;
     for (int i = 0; i < h; ++i) {
       tb_vec2 a = hull[(i + h - 1) % h], b = hull[(i + 1) % h];
-      if (line_distance(a, b, hull[i]) < 0.5f * slop) {
+      if (line_distance(a, b, hull[i]) < 0.5 * (double)slop) {
         memmove(hull + i, hull + i + 1, (size_t)(h - i - 1) * sizeof *hull);
         --h;
         removed = true;
@@ -115,7 +123,7 @@ tb_result tb_make_polygon(const tb_vec2* points, int count, float radius, tb_pol
                 TB_MAX_POLYGON_VERTICES);
   } else {
     double area = 0.0;
-    for (int i = 1; i + 1 < h; ++i) area += 0.5 * tb_cross(tb_sub(hull[i], hull[0]), tb_sub(hull[i + 1], hull[0]));
+    for (int i = 1; i + 1 < h; ++i) area += 0.5 * turn(hull[0], hull[i], hull[i + 1]);
     tb_polygon made;
     if (area < (double)slop * slop) {
       r = tb_fail(NULL, TB_ERR_DEGENERATE_POLYGON, "tb_make_polygon: hull area %g m^2 is near zero", area);

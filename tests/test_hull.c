@@ -84,6 +84,26 @@ START_TEST(degenerate_inputs_are_errors) {
 }
 END_TEST
 
+/* The corner tests in double (fuzz_hull found it): on the left edge of a
+ * 0.19 m square, x = -1e-45 (a subnormal) at the top, 0 at the bottom and at
+ * (0, 0.125). In float the turn at the bottom corner, 1e-45 x 0.125,
+ * underflowed to 0, read as collinear, and the hull dropped the corner
+ * (0, 0), leaving it 0.10 m outside. */
+START_TEST(subnormal_offsets_keep_a_corner) {
+  const float tiny = -1.40129846e-45f;
+  tb_vec2 pts[] = {{tiny, 0.185787186f}, {0.18578431f, 0.0f}, {0.0f, 0.0f}, {0.18578431f, 0.18578431f}, {0.0f, 0.125f}};
+  tb_polygon p;
+  ck_assert_int_eq(tb_make_polygon(pts, 5, 0.0f, &p), TB_OK);
+  ck_assert_int_eq(p.count, 4);
+  for (int k = 0; k < 5; ++k)
+    for (int i = 0; i < p.count; ++i) {
+      double d = (double)p.normals[i].x * ((double)pts[k].x - p.vertices[i].x) +
+                 (double)p.normals[i].y * ((double)pts[k].y - p.vertices[i].y);
+      ck_assert_double_le(d, 1e-6);
+    }
+}
+END_TEST
+
 START_TEST(vertex_limit_is_an_error_not_a_cut) {
   tb_vec2 pts[TB_MAX_POLYGON_VERTICES + 1];
   for (int i = 0; i <= TB_MAX_POLYGON_VERTICES; ++i) {
@@ -170,6 +190,7 @@ Suite* hull_suite(void) {
   tcase_add_test(tc, near_duplicates_are_welded);
   tcase_add_test(tc, degenerate_inputs_are_errors);
   tcase_add_test(tc, vertex_limit_is_an_error_not_a_cut);
+  tcase_add_test(tc, subnormal_offsets_keep_a_corner);
   tcase_add_test(tc, random_hulls_contain_their_points);
   tcase_add_test(tc, boxes);
   tcase_add_test(tc, far_sliver_is_accepted_everywhere);
