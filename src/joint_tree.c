@@ -83,6 +83,7 @@ typedef struct tb_jt_node {
   int dof;                    /* 3 for a body, the row count for a joint */
   int ref;                    /* body: solver index; joint: joint index */
   bool body;                  /* a body node (else a joint's rows) */
+  bool lone;                  /* of a tree of one joint, solved without D and H (solve_lone_joint) */
   int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
   double y[3];                /* right-hand side, then the solution */
   double d[3][3];             /* D, then D^-1 */
@@ -357,6 +358,11 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     n->a = !n->body && l->a >= 0 ? t->place[l->a] : -1;
     n->b = !n->body && l->b >= 0 ? t->place[l->b] : -1;
   }
+  for (int k = 0; k < t->component_count; ++k) {
+    int from = t->components[k], to = t->components[k + 1], joints_in = 0;
+    for (int q = from; q < to; ++q) joints_in += !t->nodes[q].body;
+    for (int q = from; q < to; ++q) t->nodes[q].lone = joints_in == 1;
+  }
   /* the keys' answers, for the next steps' same_topology (not when the keys
    * could not grow: out of memory, every step builds) */
   if (t->key_capacity >= joints) {
@@ -505,7 +511,7 @@ static void joint_rows(tb_world* w, const tb_step_context* ctx, tb_jt_node* n) {
     case 2: block_mass(2, n, a, b); break;
     default: block_mass(3, n, a, b); break;
   }
-  if (n->parent >= 0) joint_block(n, n->a == n->parent, n->hp);
+  if (n->parent >= 0 && !n->lone) joint_block(n, n->a == n->parent, n->hp);
 }
 
 /* H of a body toward its parent joint: the transpose of the joint's block. */
@@ -544,6 +550,13 @@ static void body_mass(const tb_joint_tree* t, const tb_step_context* ctx, tb_jt_
   n->d[2][2] = 1.0 / (double)s->inv_inertia + n->stiff;
 }
 
+/* A joint's block of D: -G = -g K_c. */
+static void joint_compliance(tb_jt_node* n, double g) {
+  memset(n->d, 0, sizeof n->d);
+  for (int r = 0; r < n->dof; ++r)
+    for (int c = 0; c < n->dof; ++c) n->d[r][c] = -g * n->kc[r][c];
+}
+
 /* What a factorisation reads besides the bodies' masses, for every tree: the
  * joints' blocks -G = -g K_c (and, new positions, their rows), the
  * accumulated impulses (the biased pass, after tb_joint_tree_store), and a
@@ -557,17 +570,29 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
     if (n->body) {
-      if (fresh && n->parent >= 0) body_block(n, &t->nodes[n->parent], t->nodes[n->parent].a == i);
+      if (fresh && n->parent >= 0 && !n->lone) body_block(n, &t->nodes[n->parent], t->nodes[n->parent].a == i);
       continue;
     }
     if (fresh) joint_rows(w, ctx, n);
-    int k = n->dof;
     if (use_bias)
-      for (int r = 0; r < k; ++r) n->acc[r] = *n->rows.impulse[r];
-    memset(n->d, 0, sizeof n->d);
-    for (int r = 0; r < k; ++r)
-      for (int s = 0; s < k; ++s) n->d[r][s] = -g * n->kc[r][s];
+      for (int r = 0; r < n->dof; ++r) n->acc[r] = *n->rows.impulse[r];
+    if (!n->lone) joint_compliance(n, g);
   }
+}
+
+/* What prepare leaves out for a tree of one joint, for the factorisation
+ * when solve_lone_joint declines: its H blocks and the joint's block. */
+static void prepare_lone(tb_joint_tree* t, int from, int to) {
+  for (int q = from; q < to; ++q) {
+    tb_jt_node* n = &t->nodes[q];
+    if (n->parent < 0) continue;
+    if (n->body)
+      body_block(n, &t->nodes[n->parent], t->nodes[n->parent].a == q);
+    else
+      joint_block(n, n->a == n->parent, n->hp);
+  }
+  for (int q = from; q < to; ++q)
+    if (!t->nodes[q].body) joint_compliance(&t->nodes[q], t->compliance);
 }
 
 /* The factorisation of the tree of nodes [from, to) at the current positions
@@ -682,20 +707,18 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
  * nothing done, when a body needs the geometric stiffness (the general
  * factorisation has it). */
 static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, int to, bool use_bias) {
-  int joint = -1;
-  for (int q = from; q < to; ++q)
-    if (!t->nodes[q].body) {
-      if (joint >= 0) return false; /* a body held by two joints */
-      joint = q;
-    }
+  int joint = from;
+  while (t->nodes[joint].body) ++joint;
   tb_jt_node* n = &t->nodes[joint];
   tb_solver_body* a = &ctx->states[n->sa];
   tb_solver_body* b = &ctx->states[n->sb];
   if (use_bias) {
     double h = (double)ctx->h;
     if ((n->a >= 0 && h * point_twist(n, true) > 1.0 / (double)a->inv_inertia) ||
-        (n->b >= 0 && h * point_twist(n, false) > 1.0 / (double)b->inv_inertia))
+        (n->b >= 0 && h * point_twist(n, false) > 1.0 / (double)b->inv_inertia)) {
+      prepare_lone(t, from, to);
       return false;
+    }
   }
   int k = n->dof;
   double s[3][3] = {{0.0}};
@@ -743,7 +766,7 @@ void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
   for (int k = 0; k < t->component_count; ++k) {
     int from = t->components[k], to = t->components[k + 1];
     if (!use_bias && !tree_active(ctx, t, from, to)) continue;
-    if (to - from <= 3 && solve_lone_joint(t, ctx, from, to, use_bias)) continue;
+    if (t->nodes[from].lone && solve_lone_joint(t, ctx, from, to, use_bias)) continue;
     if (refactor) factor(t, ctx, from, to, use_bias);
     substitute(w, ctx, from, to, use_bias);
   }
