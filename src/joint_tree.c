@@ -560,7 +560,8 @@ static void joint_compliance(tb_jt_node* n, double g) {
 /* What a factorisation reads besides the bodies' masses, for every tree: the
  * joints' blocks -G = -g K_c (and, new positions, their rows), the
  * accumulated impulses (the biased pass, after tb_joint_tree_store), and a
- * body's H from its parent joint's rows (parents first). */
+ * body's H from its parent joint's rows (parents first). A tree of one joint
+ * gets only its rows and impulses (its D and H: prepare_lone). */
 static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   double g = use_bias ? (double)t->softness.impulse_scale / (double)t->softness.mass_scale : TB_TREE_RELAX_COMPLIANCE;
@@ -725,11 +726,7 @@ static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, i
   for (int r = 0; r < k; ++r)
     for (int c = 0; c < k; ++c) s[r][c] = n->kc[r][c] + t->compliance * n->kc[r][c];
   invert(s, k);
-  switch (k) {
-    case 1: joint_rhs(1, t, ctx, n, use_bias ? (double)t->softness.bias_rate : 0.0); break;
-    case 2: joint_rhs(2, t, ctx, n, use_bias ? (double)t->softness.bias_rate : 0.0); break;
-    default: joint_rhs(3, t, ctx, n, use_bias ? (double)t->softness.bias_rate : 0.0); break;
-  }
+  node_rhs(t, ctx, joint, use_bias ? (double)t->softness.bias_rate : 0.0);
   double dl[3] = {0.0, 0.0, 0.0};
   for (int r = 0; r < k; ++r) {
     for (int c = 0; c < k; ++c) dl[r] -= s[r][c] * n->y[c];
