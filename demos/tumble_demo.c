@@ -173,6 +173,7 @@ static bool open_videos(const tb_renderer* r, const char* dir, double fps, tb_re
 
 static bool run_scene(tb_renderer* r, const options* o, const tb_scene* scene) {
   tb_world_id world = tb_scene_create_world(scene);
+  tb_world_enable_profile(world, true); /* the step time printed on each frame */
   if (tb_world_id_is_null(world)) {
     fprintf(stderr, "tumble-demo: %s: %s\n", scene->name, tb_last_error());
     return false;

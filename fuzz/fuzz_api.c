@@ -497,6 +497,7 @@ static tb_result create_world(model* m, world_model* wm, fuzz_input* in, bool pl
     if (set & 128) {
       uint8_t b = fuzz_u8(in);
       wd.enable_sleep = b & 1, wd.enable_continuous = b & 2, wd.enable_warm_starting = b & 4;
+      wd.enable_profile = b & 8;
     }
     wd.user_data = (callbacks & 128) ? wm : NULL;
     if (callbacks & 1) {

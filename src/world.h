@@ -53,6 +53,7 @@ typedef struct tb_world {
   float joint_hertz, joint_damping_ratio;
   float restitution_threshold, maximum_linear_speed;
   bool enable_sleep, enable_continuous, enable_warm_starting;
+  bool enable_profile; /* the profile's stage times are measured (tb_world_step) */
   /* the awake set: body indices; body->awake_index is the position here */
   int* awake;
   int awake_count, awake_capacity;

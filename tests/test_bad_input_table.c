@@ -282,6 +282,8 @@ START_TEST(stale_worlds) {
     REJECT(tb_world_enable_continuous(w, false), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_is_continuous_enabled(w), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_enable_warm_starting(w, false), TB_ERR_STALE_HANDLE, "world");
+    REJECT(tb_world_enable_profile(w, true), TB_ERR_STALE_HANDLE, "world");
+    REJECT(tb_world_is_profile_enabled(w), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_contact_tuning(w, 30, 10, 3), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_joint_tuning(w, 60, 2), TB_ERR_STALE_HANDLE, "world");
     REJECT(tb_world_set_relax_iterations(w, 4), TB_ERR_STALE_HANDLE, "world");

@@ -1,9 +1,10 @@
-/* The per-step profile: stage times that add up to the step, and counts that
- * agree with tb_world_get_counts. */
+/* The per-step profile: stage times that add up to the step (measured while
+ * the profile is enabled), and counts that agree with tb_world_get_counts. */
 #include "test_util.h"
 
 static tb_world_id pyramid_world(int base) {
   tb_world_id w = tbt_world(0.0f, -10.0f);
+  ck_assert_int_eq(tb_world_enable_profile(w, true), TB_OK);
   tb_body_def gd = tb_default_body_def();
   tb_body_id ground = tb_create_body(w, &gd);
   tb_polygon box;
@@ -43,6 +44,38 @@ START_TEST(stages_add_up_and_counts_agree) {
   ck_assert_int_eq(p.awake_joint_count, 0);
   ck_assert_int_eq(p.continuous_count, 0);
   tb_destroy_world(w);
+}
+END_TEST
+
+/* Off by default: the stage times read 0 and cost no clock reads, the counts
+ * are kept; on and off again between steps; the switch is not part of the
+ * state (the hash, what a step computes). */
+START_TEST(times_only_while_enabled) {
+  ck_assert(!tb_default_world_def().enable_profile);
+  tb_world_id w = pyramid_world(10), twin = pyramid_world(10);
+  ck_assert_int_eq(tb_world_enable_profile(w, false), TB_OK);
+  ck_assert(!tb_world_is_profile_enabled(w) && tb_world_is_profile_enabled(twin));
+  ck_assert(tb_world_hash(w) == tb_world_hash(twin));
+  for (int k = 0; k < 3; ++k) {
+    ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+    ck_assert_int_eq(tb_world_step(twin, 1.0f / 60.0f, 4), TB_OK);
+  }
+  tb_profile off = tb_world_get_profile(w), on = tb_world_get_profile(twin);
+  ck_assert(off.step == 0.0f && off.broad_phase == 0.0f && off.narrow_phase == 0.0f && off.solver == 0.0f &&
+            off.continuous == 0.0f && off.islands == 0.0f);
+  ck_assert(on.step > 0.0f && on.solver > 0.0f);
+  ck_assert_int_eq(off.awake_body_count, 55);
+  ck_assert_int_eq(off.awake_contact_count, on.awake_contact_count);
+  ck_assert_int_eq(off.pair_count, on.pair_count);
+  ck_assert(tb_world_hash(w) == tb_world_hash(twin));
+  ck_assert_int_eq(tb_world_enable_profile(w, true), TB_OK);
+  ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+  ck_assert(tb_world_is_profile_enabled(w) && tb_world_get_profile(w).step > 0.0f);
+  ck_assert_int_eq(tb_world_enable_profile(w, false), TB_OK);
+  ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_OK);
+  ck_assert(tb_world_get_profile(w).step == 0.0f);
+  tb_destroy_world(w);
+  tb_destroy_world(twin);
 }
 END_TEST
 
@@ -86,6 +119,7 @@ static Suite* profile_suite(void) {
   TCase* tc = tcase_create("profile");
   tcase_add_test(tc, zero_before_the_first_step);
   tcase_add_test(tc, stages_add_up_and_counts_agree);
+  tcase_add_test(tc, times_only_while_enabled);
   tcase_add_test(tc, new_pairs_counted_once);
   tcase_add_test(tc, fast_body_is_counted);
   tcase_add_test(tc, stale_world_is_rejected);

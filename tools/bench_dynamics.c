@@ -115,6 +115,7 @@ static double dynamic_mass(tb_world_id world) {
 
 static run_result run_once(const tb_scene* s, const options* o, int steps, scene_result* out) {
   tb_world_def wd = tb_default_world_def();
+  wd.enable_profile = true; /* the stage times are reported */
   tb_world_id world = tb_create_world(&wd);
   if (tb_world_id_is_null(world)) {
     fprintf(stderr, "tb_create_world: %s\n", tb_last_error());

@@ -194,6 +194,7 @@ static bool load_scene(app* a, int index) {
   a->scene_index = (index % a->scene_count + a->scene_count) % a->scene_count;
   const tb_scene* s = scene(a);
   a->world = tb_scene_create_world(s);
+  tb_world_enable_profile(a->world, true); /* the step time shown */
   if (tb_world_id_is_null(a->world)) {
     fprintf(stderr, "tumble-viewer: %s: %s\n", s->name, tb_last_error());
     return false;
