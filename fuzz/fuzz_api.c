@@ -854,7 +854,8 @@ static tb_result world_setter(world_model* wm, fuzz_input* in) {
       return tb_world_set_force_field(w, on ? field_fn : NULL, wm);
     }
     case 12: return tb_world_set_pre_solve(w, fuzz_bool(in) ? pre_solve_fn : NULL, wm);
-    default: { /* a bad integrator or gravity, to be refused */
+    default: { /* a bad integrator or gravity, to be refused; the profile switch (not in the hash) flips */
+      (void)tb_world_enable_profile(w, !tb_world_is_profile_enabled(w));
       tb_result r = tb_world_set_integrator(w, (tb_integrator)-1);
       return r != TB_OK ? r : tb_world_set_gravity(w, (tb_vec2){NAN, 0});
     }
