@@ -537,6 +537,13 @@ static void zero_impulses(tb_joint* j) {
   j->spring_impulse = j->motor_impulse = j->lower_impulse = j->upper_impulse = 0.0f;
 }
 
+void tb_joint_zero_impulses(tb_joint* j) { zero_impulses(j); }
+
+bool tb_joint_point_only(const tb_joint* j) {
+  bool spring = j->enable_spring && j->hertz > 0.0f;
+  return j->type == TB_JOINT_REVOLUTE && !j->skip && !spring && !j->enable_motor && !j->enable_limit;
+}
+
 static void scale_impulses(tb_joint* j, float s) {
   j->linear_impulse = tb_scale(s, j->linear_impulse);
   j->angular_impulse *= s;
@@ -620,6 +627,15 @@ static inline void save_pair(const tb_joint* j, tb_step_context* ctx, const body
     ctx->states[j->solver_b].v = p->b.v;
     ctx->states[j->solver_b].w = p->b.w;
   }
+}
+
+void tb_joint_warm_start_point(const tb_joint* j, tb_step_context* ctx) {
+  /* revolute_warm_start without the copies of load_pair; the static dummy
+   * stays at rest (save_pair's rule): its writes go to a copy */
+  tb_solver_body sink_a = ctx->states[ctx->static_index], sink_b = sink_a;
+  tb_solver_body* a = j->solver_a != ctx->static_index ? &ctx->states[j->solver_a] : &sink_a;
+  tb_solver_body* b = j->solver_b != ctx->static_index ? &ctx->states[j->solver_b] : &sink_b;
+  apply_linear(a, b, tb_rotate(a->dq, j->frame_a), tb_rotate(b->dq, j->frame_b), j->linear_impulse);
 }
 
 void tb_joint_warm_start(tb_world* w, int index, tb_step_context* ctx) {

@@ -66,6 +66,7 @@ typedef struct tb_step_joint {
   int8_t rigid_rows; /* tb_joint_rigid_row_count, 0 for a skipped joint */
   bool wide;         /* joint_wide.c takes it (tb_wide_joint_fits) */
   bool in_tree;      /* set by tb_joint_tree_build */
+  bool point_only;   /* a revolute joint without spring, motor or limit (tb_joint_point_only) */
 } tb_step_joint;
 
 struct tb_world;
@@ -82,6 +83,8 @@ bool tb_joints_allow_collision(const struct tb_world* w, int body_a, int body_b)
  * store: after the substeps, keep what the getters report. */
 void tb_joint_prepare(struct tb_world* w, int joint, tb_step_context* ctx);
 void tb_joint_warm_start(struct tb_world* w, int joint, tb_step_context* ctx);
+/* tb_joint_warm_start of a joint with nothing but its point (tb_joint_point_only). */
+void tb_joint_warm_start_point(const tb_joint* j, tb_step_context* ctx);
 void tb_joint_solve(struct tb_world* w, int joint, tb_step_context* ctx, bool use_bias);
 /* The rigid rows of a joint (the parts the world's joint softness holds, at
  * most three), for the exact solve of joint trees (joint_tree.c). Row r has
@@ -98,6 +101,12 @@ typedef struct tb_rigid_rows {
 int tb_joint_rigid_row_count(const tb_joint* j);
 void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out);
 void tb_joint_store(struct tb_world* w, int joint, const tb_step_context* ctx);
+/* A revolute joint with nothing but its point: no spring, motor or limit
+ * (its other impulses are zero, tb_joint_prepare). */
+bool tb_joint_point_only(const tb_joint* j);
+/* Zeroes the accumulated impulses, as a biased solve does without warm
+ * starting (for joints that no solve pass reaches but a joint tree's). */
+void tb_joint_zero_impulses(tb_joint* j);
 /* tb_joint_store of a revolute joint with nothing but its point, whose
  * accumulated impulse the wide joints kept (joint_wide.c). */
 void tb_joint_store_point(tb_joint* j, tb_vec2 impulse, const tb_step_context* ctx);

@@ -90,7 +90,7 @@ static int moving(const tb_step_context* ctx, int s) { return ctx->states[s].inv
 
 void tb_wide_joints_build(tb_world* w, const tb_step_context* ctx) {
   tb_wide_joints* wj = &w->wide_joints;
-  int count = w->step_joint_count, bodies = ctx->static_index + 1;
+  int count = w->step_joint_count - w->tree_joint_count, bodies = ctx->static_index + 1;
   wj->block_count = 0;
   w->scalar_joint_count = count;
   if (w->joints_one_at_a_time) return;
@@ -181,8 +181,8 @@ void tb_wide_joints_build(tb_world* w, const tb_step_context* ctx) {
     wb->point[lane] = j->in_tree ? 0.0f : 1.0f;
     wb->tree |= j->in_tree;
     wb->points += !j->in_tree;
+    if (tb_joint_point_only(j)) continue;
     bool spring = j->enable_spring && j->hertz > 0.0f;
-    if (!spring && !j->enable_motor && !j->enable_limit) continue;
     if (!wb->angles) memset(an, 0, sizeof *an); /* the block's first lane with angle rows */
     wb->angles = 1;
     an->angle0[lane] = j->delta_angle;

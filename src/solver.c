@@ -152,6 +152,32 @@ static bool collect_joints(tb_world* w) {
   return true;
 }
 
+/* Joints that a joint tree solves whole (a revolute joint with nothing but
+ * its point: a chain's links, a pendulum's hinge) need only their warm start
+ * and their store; no pass has a row of theirs to solve. They go to the end of
+ * step_joints (tree_joint_count), in their order, out of the wide blocks and
+ * the one-at-a-time passes: in the wide blocks, for their warm start only, a
+ * pendulum's hinge spent 15% of its step building, warm-starting and
+ * skipping its block. Their step info is not moved with them: nothing after
+ * the wide build reads it. */
+static void set_apart_tree_joints(tb_world* w) {
+  int count = w->step_joint_count, kept = 0, apart = 0;
+  w->tree_joint_count = 0;
+  if (w->joints_one_at_a_time || !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, count, sizeof(int)))
+    return; /* (out of memory: they stay in the passes, which solve them as well) */
+  tb_step_joint* info = w->step_joint_info;
+  for (int k = 0; k < count; ++k) {
+    if (info[k].in_tree && info[k].point_only) {
+      w->scratch[apart++] = w->step_joints[k];
+      continue;
+    }
+    info[kept] = info[k];
+    w->step_joints[kept++] = w->step_joints[k];
+  }
+  memcpy(w->step_joints + kept, w->scratch, (size_t)apart * sizeof *w->step_joints);
+  w->tree_joint_count = apart;
+}
+
 /* Room for the solver bodies (+1 static dummy) and their motion terms. */
 static bool reserve_scratch(tb_world* w) {
   int n = w->awake_count + 1;
@@ -322,9 +348,11 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     int index = w->step_joints[k];
     tb_joint_prepare(w, index, &ctx);
     const tb_joint* j = tb_joint_at(w, index);
-    w->step_joint_info[k] =
-        (tb_step_joint){j->solver_a, j->solver_b, (int8_t)(j->skip ? 0 : tb_joint_rigid_row_count(j)),
-                        tb_wide_joint_fits(j, &ctx), false};
+    w->step_joint_info[k] = (tb_step_joint){.solver_a = j->solver_a,
+                                            .solver_b = j->solver_b,
+                                            .rigid_rows = (int8_t)(j->skip ? 0 : tb_joint_rigid_row_count(j)),
+                                            .wide = tb_wide_joint_fits(j, &ctx),
+                                            .point_only = tb_joint_point_only(j)};
   }
   if (!tb_joint_tree_build(w, &ctx)) { /* out of memory: Gauss-Seidel solves every joint */
     for (int k = 0; k < w->step_joint_count; ++k) {
@@ -333,16 +361,20 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     }
     w->joint_tree.node_count = 0;
   }
+  set_apart_tree_joints(w);
   tb_wide_joints_build(w, &ctx);
+  const int* tree_joints = w->step_joints + (w->step_joint_count - w->tree_joint_count);
 
   for (int sub = 0; sub < substeps; ++sub) {
     integrate_velocities(w, &ctx, motions, w->time + (double)sub * h);
     if (ctx.enable_warm_starting) {
       for (int k = 0; k < w->scalar_joint_count; ++k) tb_joint_warm_start(w, w->step_joints[k], &ctx);
+      for (int k = 0; k < w->tree_joint_count; ++k) tb_joint_warm_start_point(tb_joint_at(w, tree_joints[k]), &ctx);
       tb_wide_joints_warm_start(w, &ctx);
       tb_contact_solver_warm_start(w, &ctx);
     } else {
       tb_contact_solver_reset(w);
+      for (int k = 0; k < w->tree_joint_count; ++k) tb_joint_zero_impulses(tb_joint_at(w, tree_joints[k]));
     }
     for (int k = 0; k < w->scalar_joint_count; ++k) tb_joint_solve(w, w->step_joints[k], &ctx, true);
     tb_wide_joints_solve(w, &ctx, true);
@@ -360,6 +392,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   tb_contact_solver_finish(w, &ctx);
   tb_wide_joints_store(w, &ctx);
   for (int k = 0; k < w->scalar_joint_count; ++k) tb_joint_store(w, w->step_joints[k], &ctx);
+  for (int k = 0; k < w->tree_joint_count; ++k) tb_joint_store(w, tree_joints[k], &ctx);
 
   /* finish: positions from the step start plus the motion; sleep clocks */
   int bad = 0;

@@ -86,6 +86,9 @@ typedef struct tb_world {
   struct tb_step_joint* step_joint_info; /* per step joint, in step order (joint.h) */
   int step_joint_info_capacity;
   int scalar_joint_count; /* the first ones of step_joints, solved one at a time; the rest in wide_joints */
+  /* the last ones of step_joints: joints a joint tree solves whole (tb_joint_point_only), which
+   * the passes leave alone (solver.c: set_apart_tree_joints) */
+  int tree_joint_count;
   bool joints_one_at_a_time; /* tests' reference: joint_wide.c takes no joint (not in the public API) */
   bool contacts_four_lanes;  /* tests' reference: no eight-lane contact passes (contact_solver.c) */
   tb_joint_tree joint_tree;
