@@ -20,7 +20,7 @@
  * were solved one by one, each alone in a block of four (688 bytes a contact,
  * 360 of the 527 MB of 1,000 bodies created at one point). bits: scratch of
  * one word per body index; waiting is reordered. Returns the next free
- * colour. */
+ * colour: one past the last colour used (first when nothing waits). */
 int tb_color_rounds(int bodies, uint32_t* bits, int32_t* waiting, int left, int first, int32_t* color);
 
 #endif

@@ -197,8 +197,8 @@ tb_world* tb_world_get_unlocked(tb_world_id id, const char* fn) {
  * fn == NULL resolves quietly (for the *_is_valid queries). */
 typedef enum handle_kind { BODY, SHAPE, CHAIN, JOINT } handle_kind;
 
-static void* resolve(int32_t index1, uint16_t world0, uint16_t gen, handle_kind kind, tb_world** out, const char* fn,
-                     bool unlocked) {
+static inline void* resolve(int32_t index1, uint16_t world0, uint16_t gen, handle_kind kind, tb_world** out,
+                            const char* fn, bool unlocked) {
   const char* what = kind == SHAPE ? "shape" : kind == CHAIN ? "chain" : kind == JOINT ? "joint" : "body";
   if (index1 <= 0 || world0 >= TB_MAX_WORLDS || worlds[world0] == NULL) {
     if (fn != NULL)
@@ -968,8 +968,7 @@ static void memory_stats(const tb_world* w, tb_memory_stats* m) {
   m->broad_phase = tb_broad_phase_tree_bytes(&w->broad_phase);
   m->islands = tb_pool_bytes(&w->islands);
   m->solver = tb_solver_bytes(w) + tb_contact_solver_bytes(w) + tb_joint_tree_bytes(&w->joint_tree) +
-              tb_wide_joints_bytes(&w->wide_joints) +
-              (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies +
+              tb_wide_joints_bytes(&w->wide_joints) + (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies +
               (size_t)w->step_contact_capacity * sizeof *w->step_contacts +
               (size_t)w->step_joint_capacity * sizeof *w->step_joints +
               (size_t)w->step_joint_info_capacity * sizeof *w->step_joint_info +
