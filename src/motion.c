@@ -43,17 +43,17 @@ typedef struct body_ctx {
   float max_linear_speed, max_angular_speed;
 } body_ctx;
 
-static bool state_finite(const state* y) {
+static inline __attribute__((always_inline)) bool state_finite(const state* y) {
   return tb_vec_finite(y->x) && isfinite(y->a) && tb_vec_finite(y->v) && isfinite(y->w);
 }
 
-static void cap_speeds(const body_ctx* c, state* y) {
+static inline __attribute__((always_inline)) void cap_speeds(const body_ctx* c, state* y) {
   y->v = tb_cap_linear_speed(y->v, c->max_linear_speed);
   y->w = tb_cap_angular_speed(y->w, c->max_angular_speed);
 }
 
 /* The applied force plus the field's, at time t and state y. */
-static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* force, float* torque) {
+static inline __attribute__((always_inline)) void total_load(const body_ctx* c, double t, const state* y, tb_vec2* force, float* torque) {
   *force = c->body->force;
   *torque = c->body->torque;
   if (c->world->force_field != NULL) {
@@ -70,7 +70,7 @@ static void total_load(const body_ctx* c, double t, const state* y, tb_vec2* for
 
 /* dy/dt of the damped equations of motion (used by the Runge-Kutta schemes) at
  * a finite state y; false when y is not finite (the field is not called). */
-static bool derivative(const body_ctx* c, double t, const state* y, rate* out) {
+static inline __attribute__((always_inline)) bool derivative(const body_ctx* c, double t, const state* y, rate* out) {
   if (!state_finite(y)) return false;
   tb_vec2 f;
   float tq;
@@ -84,14 +84,14 @@ static bool derivative(const body_ctx* c, double t, const state* y, rate* out) {
 
 /* y + h d, within the speed caps (h exact in double for the angle, rounded to
  * float for the rest) */
-static state advance(const body_ctx* c, const state* y, double h, const rate* d) {
+static inline __attribute__((always_inline)) state advance(const body_ctx* c, const state* y, double h, const rate* d) {
   float hf = (float)h;
   state next = {tb_mul_add(y->x, hf, d->dx), y->a + h * d->da, tb_mul_add(y->v, hf, d->dv), y->w + hf * d->dw};
   cap_speeds(c, &next);
   return next;
 }
 
-static bool step_euler(const body_ctx* c, double t, double exact_h, state* y) {
+static inline __attribute__((always_inline)) bool step_euler(const body_ctx* c, double t, double exact_h, state* y) {
   float h = (float)exact_h;
   tb_vec2 f;
   float tq;
@@ -107,7 +107,7 @@ static bool step_euler(const body_ctx* c, double t, double exact_h, state* y) {
   return state_finite(y);
 }
 
-static bool step_midpoint(const body_ctx* c, double t, double h, state* y) {
+static inline __attribute__((always_inline)) bool step_midpoint(const body_ctx* c, double t, double h, state* y) {
   rate k1, k2;
   if (!derivative(c, t, y, &k1)) return false;
   state mid = advance(c, y, 0.5 * h, &k1);
@@ -116,7 +116,7 @@ static bool step_midpoint(const body_ctx* c, double t, double h, state* y) {
   return state_finite(y);
 }
 
-static bool step_rk4(const body_ctx* c, double t, double h, state* y) {
+static inline __attribute__((always_inline)) bool step_rk4(const body_ctx* c, double t, double h, state* y) {
   rate k1, k2, k3, k4;
   if (!derivative(c, t, y, &k1)) return false;
   state y2 = advance(c, y, 0.5 * h, &k1);
