@@ -53,7 +53,8 @@ static inline __attribute__((always_inline)) void cap_speeds(const body_ctx* c, 
 }
 
 /* The applied force plus the field's, at time t and state y. */
-static inline __attribute__((always_inline)) void total_load(const body_ctx* c, double t, const state* y, tb_vec2* force, float* torque) {
+static inline __attribute__((always_inline)) void total_load(const body_ctx* c, double t, const state* y,
+                                                             tb_vec2* force, float* torque) {
   *force = c->body->force;
   *torque = c->body->torque;
   if (c->world->force_field != NULL) {
