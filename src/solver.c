@@ -163,7 +163,8 @@ static bool collect_joints(tb_world* w) {
 static void set_apart_tree_joints(tb_world* w) {
   int count = w->step_joint_count, kept = 0, apart = 0;
   w->tree_joint_count = 0;
-  if (w->joints_one_at_a_time || !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, count, sizeof(int)))
+  if (count == 0 || w->joints_one_at_a_time ||
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, count, sizeof(int)))
     return; /* (out of memory: they stay in the passes, which solve them as well) */
   tb_step_joint* info = w->step_joint_info;
   for (int k = 0; k < count; ++k) {
@@ -174,7 +175,7 @@ static void set_apart_tree_joints(tb_world* w) {
     info[kept] = info[k];
     w->step_joints[kept++] = w->step_joints[k];
   }
-  memcpy(w->step_joints + kept, w->scratch, (size_t)apart * sizeof *w->step_joints);
+  if (apart > 0) memcpy(w->step_joints + kept, w->scratch, (size_t)apart * sizeof *w->step_joints);
   w->tree_joint_count = apart;
 }
 
