@@ -364,7 +364,8 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   }
   set_apart_tree_joints(w);
   tb_wide_joints_build(w, &ctx);
-  const int* tree_joints = w->step_joints + (w->step_joint_count - w->tree_joint_count);
+  const int* tree_joints = /* (step_joints is null in a world that never had a joint) */
+      w->tree_joint_count > 0 ? w->step_joints + (w->step_joint_count - w->tree_joint_count) : NULL;
 
   for (int sub = 0; sub < substeps; ++sub) {
     integrate_velocities(w, &ctx, motions, w->time + (double)sub * h);
