@@ -145,7 +145,7 @@ static bool queue_move(tb_world* w, int shape_index) {
  * re-insertions of a moving proxy but more pairs: a fixed 0.1 m gave small
  * shapes several times the pairs their contacts need (spinner: 2.5 times Box2D
  * v3's). So a moving shape's margin grows with its size, an eighth of its
- * half-extent, from the speculative distance up to aabb_margin (as Box2D
+ * half-extent, from the speculative distance up to aabb_margin (5 cm, as Box2D
  * v3's, which scales its margin by shape likewise); a static shape never
  * moves and keeps the speculative distance. */
 static float shape_margin(const tb_shape* s, tb_body_type type) {

@@ -9,8 +9,13 @@
 
 #include "tree.h"
 
-/* Fat AABB margin: a proxy moving less than this is not re-inserted. */
-#define TB_AABB_MARGIN 0.1f
+/* The largest fat AABB margin (a shape's own is an eighth of its half-extent,
+ * broad_phase.c: shape_margin): a proxy moving less than its margin is not
+ * re-inserted. 5 cm, Box2D v3's cap: at 10 cm the bodies of a falling column
+ * 0.25 m apart paired with the ones above and below them (compounds: 23,600
+ * pairs against 4,200 at 5 cm, 100 steps in), and every accuracy and stress
+ * row is the same at either. */
+#define TB_AABB_MARGIN 0.05f
 
 typedef struct tb_broad_phase {
   tb_tree trees[3]; /* indexed by tb_body_type */
