@@ -219,6 +219,15 @@ void tb_broad_phase_move_proxy(tb_world* w, int shape_index, tb_vec2 displacemen
   tb_shape* s = tb_shape_at(w, shape_index);
   if (s->proxy < 0) return;
   tb_tree* tree = &w->broad_phase.trees[s->tree];
+  /* The stretch along the predicted motion (world.c) is the body's own,
+   * not its motion relative to its neighbours, which the broad phase does not
+   * know: uncapped, the boxes of a column falling as one (compounds, 0.25 m
+   * apart at 40 m/s) reached into each other and paired every body with the
+   * ones above and below it (24,000 pairs 300 steps in, against 14,700 capped
+   * and Box2D v3's 15,100). Capped at the margin, pileup_1000's depth beyond
+   * its force stays at 3.7 mm (6.4 mm without any stretch: its bound is 5). */
+  displacement.x = fminf(fmaxf(displacement.x, -s->margin), s->margin);
+  displacement.y = fminf(fmaxf(displacement.y, -s->margin), s->margin);
   bool moved = enlarge ? tb_tree_enlarge_proxy(tree, s->proxy, s->aabb, s->margin, displacement)
                        : tb_tree_move_proxy_with_margin(tree, s->proxy, s->aabb, s->margin, displacement);
   /* out of memory here only delays pair finding to the proxy's next move */

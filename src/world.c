@@ -340,7 +340,8 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
    * 44,600 against 25,000 at a quarter, Box2D v3 23,000); no stretch at all
    * (20,000) left pileup_1000's bodies deeper than their contact forces
    * explain (6.4 mm, against 3.7 at a quarter and a 5 mm bound), in every
-   * margin tried (broad_phase.c: shape_margin). */
+   * margin tried (broad_phase.c: shape_margin). The stretch is capped at the
+   * shape's margin (tb_broad_phase_move_proxy). */
   for (int i = 0; i < w->awake_count; ++i) {
     int index = w->awake[i];
     tb_body_keep_in_world(tb_body_at(w, index));
