@@ -128,6 +128,7 @@ typedef struct tb_contact_constraint {
   float spin_a, spin_b;       /* the bodies' angular velocities at the step start (see restitution_targets) */
   float target[2];            /* normal speed after the bounce, of the points in bouncing (bit p: point p) */
   int bouncing;
+  int next_bouncing; /* the next constraint in step order with a bouncing point, -1 after the last */
 } tb_contact_constraint;
 
 /* Up to four contacts with a point deeper than its push depth (less half
@@ -1481,14 +1482,23 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
    * more than TB_RESTITUTION_TOLERANCE (one pass for lone contacts). */
   bool bouncy = false; /* most scenes have no restitution: one look instead of the passes */
   for (int k = 0; k < w->step_contact_count; ++k) bouncy |= cs[k].restitution != 0.0f;
-  for (int k = 0; bouncy && k < w->step_contact_count; ++k)
-    if (cs[k].restitution != 0.0f)
-      restitution_targets(&cs[k], &wide[cs[k].lane / 4], ctx->states, ctx->restitution_threshold);
-  for (int pass = 0; bouncy && pass < TB_RESTITUTION_PASSES; ++pass) {
+  /* The passes visit only the contacts with a point to bounce, chained in
+   * step order: in a churning pile most contacts have restitution but few
+   * approach faster than the threshold (spinner: 2,900 of 14,400, with all 16
+   * passes a step). */
+  int first = -1, *link = &first;
+  for (int k = 0; bouncy && k < w->step_contact_count; ++k) {
+    if (cs[k].restitution == 0.0f) continue;
+    restitution_targets(&cs[k], &wide[cs[k].lane / 4], ctx->states, ctx->restitution_threshold);
+    if (cs[k].bouncing == 0) continue;
+    *link = k;
+    link = &cs[k].next_bouncing;
+  }
+  *link = -1;
+  for (int pass = 0; first >= 0 && pass < TB_RESTITUTION_PASSES; ++pass) {
     float change = 0.0f;
-    for (int k = 0; k < w->step_contact_count; ++k)
-      if (cs[k].restitution != 0.0f)
-        change = fmaxf(change, apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states));
+    for (int k = first; k >= 0; k = cs[k].next_bouncing)
+      change = fmaxf(change, apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states));
     if (change <= TB_RESTITUTION_TOLERANCE) break;
   }
   /* the lanes' accumulated impulses are kept for the next step's warm start */
