@@ -143,6 +143,33 @@ static int merge_edges(tb_world* w, int p, int q, int* tail) {
   return head;
 }
 
+/* Merges the sorted new edges into the sorted rest of a body's list, links
+ * both ways; returns the head. Past the last new edge the rest stays as it
+ * was, links and all: the walk stops there (a spinning bar with hundreds of
+ * contacts takes a few new ones a step). */
+static int merge_into_rest(tb_world* w, int fresh, int rest) {
+  int head = -1, last = -1;
+  while (fresh >= 0) {
+    int take;
+    if (rest >= 0 && edge_order(w, rest) < edge_order(w, fresh)) {
+      take = rest;
+      rest = edge_next(w, rest);
+    } else {
+      take = fresh;
+      fresh = edge_next(w, fresh);
+    }
+    if (last >= 0)
+      set_edge_next(w, last, take);
+    else
+      head = take;
+    contact_at(w, take >> 1)->edges[take & 1].prev = last;
+    last = take;
+  }
+  set_edge_next(w, last, rest); /* there was at least one new edge */
+  if (rest >= 0) contact_at(w, rest >> 1)->edges[rest & 1].prev = last;
+  return head;
+}
+
 /* Sorts the first `count` edges of a list (bottom-up merge sort on the list
  * itself: O(count log count), no memory) and merges them into the sorted
  * rest. The keys are unique (one contact per pair of shapes), so the result
@@ -183,8 +210,7 @@ static int sort_new_edges(tb_world* w, int list, int count) {
   int last = list;
   for (int i = 1; i < count; ++i) last = edge_next(w, last);
   set_edge_next(w, last, -1);
-  int tail;
-  return merge_edges(w, list, rest, &tail);
+  return merge_into_rest(w, list, rest);
 }
 
 void tb_contacts_sort_new(tb_world* w) {
@@ -195,11 +221,6 @@ void tb_contacts_sort_new(tb_world* w) {
     int count = b->new_contact_count < b->contact_count ? b->new_contact_count : b->contact_count;
     b->contact_list = sort_new_edges(w, b->contact_list, count);
     b->new_contact_count = 0;
-    int prev = -1;
-    for (int key = b->contact_list; key >= 0; key = edge_next(w, key)) {
-      contact_at(w, key >> 1)->edges[key & 1].prev = prev;
-      prev = key;
-    }
   }
   w->new_contact_body_count = 0;
 }
