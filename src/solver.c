@@ -346,6 +346,19 @@ int tb_solve(tb_world* w, float dt, int substeps) {
 
   if (!tb_contact_solver_prepare(w, &ctx)) return 0; /* out of memory: the step is skipped */
   for (int k = 0; k < w->step_joint_count; ++k) {
+    /* The joint records and their bodies lie all over memory (a grid's
+     * joints were 11% of its step, waiting on them): ask for the record
+     * eight joints ahead, and for the bodies of the one four ahead, whose
+     * record was asked for four joints ago. */
+    if (k + 8 < w->step_joint_count) {
+      const char* r = (const char*)tb_joint_at(w, w->step_joints[k + 8]);
+      for (size_t line = 0; line < sizeof(tb_joint); line += 64) __builtin_prefetch(r + line);
+    }
+    if (k + 4 < w->step_joint_count) {
+      const tb_joint* ahead = tb_joint_at(w, w->step_joints[k + 4]);
+      __builtin_prefetch(tb_body_at(w, ahead->edges[0].body));
+      __builtin_prefetch(tb_body_at(w, ahead->edges[1].body));
+    }
     int index = w->step_joints[k];
     tb_joint_prepare(w, index, &ctx);
     const tb_joint* j = tb_joint_at(w, index);
