@@ -1340,6 +1340,7 @@ float tb_contact_solver_solve(tb_world* w, tb_step_context* ctx, bool use_bias, 
   /* one loop per pass kind, each with solve_wide specialised for it */
   for (int group = 0; group < 2; ++group) {
     int lo = group == 0 ? 0 : fixed_from, hi = group == 0 ? fixed_from : n;
+    if (lo == hi) continue; /* (a small scene has one of the two) */
     int first = backward ? hi - 1 : lo, step = backward ? -1 : 1;
 #if defined(TB_EIGHT_LANES)
     if (pairs) {
