@@ -450,11 +450,12 @@ static void carry_impulses(const tb_manifold* old, tb_manifold* m) {
  * going through that shape, which may not be among its contacts yet (a
  * bullet along a wall, 3 m from the corner, moves 3 m a step): letting go
  * there would let it out of the corner. So a patch end that the bodies can
- * reach this step (the solver asks, see tb_contact_extend_patch) is kept only if no
- * other solid shape that the incident shape collides with holds either of
- * two points one slop from it: back along the face and off it (where the
- * incident passes to reach the end), or past it and under the face line
- * (where a floor would run on). Chains decide their joints themselves. */
+ * reach this step, once a body slides past it (the solver asks, see ask_ends
+ * in contact_solver.c), is kept only if no other solid shape that the
+ * incident shape collides with holds either of two points one slop from it:
+ * back along the face and off it (where the incident passes to reach the
+ * end), or past it and under the face line (where a floor would run on).
+ * Chains decide their joints themselves. */
 
 typedef struct cover_query {
   const tb_world* w;
@@ -498,12 +499,17 @@ static __attribute__((noinline)) bool face_runs_on(const tb_world* w, const tb_c
   return q.covered;
 }
 
-void tb_contact_extend_patch(const tb_world* w, tb_contact* c, float reach) {
+bool tb_contact_face_runs_on(tb_world* w, int contact, bool max_end) {
+  tb_contact* c = contact_at(w, contact);
   tb_patch* p = &c->patch;
-  if (!p->face || c->manifold.point_count == 0) return;
+  if (!p->face || c->manifold.point_count == 0) return false;
   tb_vec2 t = tb_right_perp(c->manifold.normal);
-  if (p->slide_max < reach && face_runs_on(w, c, p->end_max, t)) p->slide_max = FLT_MAX;
-  if (p->slide_min > -reach && face_runs_on(w, c, p->end_min, tb_neg(t))) p->slide_min = -FLT_MAX;
+  if (!face_runs_on(w, c, max_end ? p->end_max : p->end_min, max_end ? t : tb_neg(t))) return false;
+  if (max_end)
+    p->slide_max = FLT_MAX;
+  else
+    p->slide_min = -FLT_MAX;
+  return true;
 }
 
 /* Updates one contact; false when it was destroyed (bounding boxes apart). */

@@ -55,10 +55,11 @@ void tb_contacts_destroy_of_body(struct tb_world* w, int body, int shape);
  * sensor events, wakes sleeping bodies that start being touched, and lists
  * the touching contacts the solver must handle in world->step_contacts. */
 void tb_contacts_update(struct tb_world* w);
-/* Removes the ends of c's patch that lie within reach (m, how far the bodies
- * can slide this step) where another solid shape continues the face or
- * closes the corner (see contact.c). */
-void tb_contact_extend_patch(const struct tb_world* w, tb_contact* c, float reach);
+/* Whether another solid shape continues the face or closes the corner at one
+ * end of contact's patch (max_end: the end at slide_max; see contact.c); if
+ * so, that end is removed from the patch (slide limit +-FLT_MAX) for as long
+ * as the manifold lasts. */
+bool tb_contact_face_runs_on(struct tb_world* w, int contact, bool max_end);
 /* Whether a pair of shape types has a manifold function (segment-segment has none). */
 bool tb_shape_types_collide(tb_shape_type a, tb_shape_type b);
 

@@ -281,6 +281,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   int n = w->awake_count;
   float h = dt / (float)substeps;
   tb_step_context ctx = {0};
+  ctx.world = w;
   ctx.dt = dt;
   ctx.inv_dt = 1.0f / dt;
   ctx.h = h;

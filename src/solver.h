@@ -72,6 +72,10 @@ typedef struct tb_step_context {
   bool relax_all;   /* every constraint is solved in this relax pass (and nothing recorded) */
   int relax_solved; /* contact blocks the last relax pass solved */
   bool four_lanes;  /* contacts four lanes at a time even where eight could be (tests' reference) */
+  /* the world, for the contact solver's question whether a face runs on
+   * (tb_contact_face_runs_on: a read of the broad phase and the bodies'
+   * transforms, which stay the step start's during the substeps) */
+  struct tb_world* world;
 } tb_step_context;
 
 /* The speed caps (tumble.h, maximum_linear_speed) hold for every moving body
