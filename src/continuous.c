@@ -38,17 +38,6 @@
  * fraction of the shape's thinnest half-width. */
 #define CORE_FRACTION 0.25f
 
-static tb_shape_proxy shape_proxy(const tb_shape* s) {
-  switch (s->type) {
-    case TB_SHAPE_CIRCLE: return tb_make_circle_proxy(&s->geom.circle);
-    case TB_SHAPE_CAPSULE: return tb_make_capsule_proxy(&s->geom.capsule);
-    case TB_SHAPE_SEGMENT: return tb_make_segment_proxy(&s->geom.segment);
-    case TB_SHAPE_CHAIN_SEGMENT: return tb_make_segment_proxy(&s->geom.chain_segment.segment);
-    case TB_SHAPE_POLYGON: break;
-  }
-  return tb_make_polygon_proxy(&s->geom.polygon);
-}
-
 /* Centroid in body coordinates. */
 static tb_vec2 shape_centroid(const tb_shape* s) {
   switch (s->type) {
@@ -176,7 +165,7 @@ static bool candidate(int32_t proxy, int32_t other_index, void* context) {
       !w->custom_filter(tb_make_shape_id(w, sc->shape), tb_make_shape_id(w, other_index), w->custom_filter_context))
     return true;
 
-  tb_shape_proxy other = shape_proxy(o);
+  tb_shape_proxy other = tb_shape_geom_proxy(o);
   float t = sc->t;
   toi_kind k = impact(&other, &fixed, &sc->proxy, &sc->sweep, sc->t, &t);
   if ((k == TOI_AT_START || k == TOI_OVERLAPPED) && sc->extent > 0.0f) {
@@ -216,7 +205,7 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
     if (s->sensor) continue;
     sc.shape = i;
     sc.s = s;
-    sc.proxy = shape_proxy(s);
+    sc.proxy = tb_shape_geom_proxy(s);
     sc.centroid_local = shape_centroid(s);
     sc.centroid1 = tb_transform_point(xf1, sc.centroid_local);
     sc.centroid2 = tb_transform_point(xf2, sc.centroid_local);

@@ -14,7 +14,7 @@ const char* tb_check_circle(const tb_circle* c);
 const char* tb_check_capsule(const tb_capsule* c);
 const char* tb_check_segment(const tb_segment* s);
 const char* tb_check_polygon(const tb_polygon* p);
-/* The shape as GJK sees it, in body coordinates (query.c). */
+/* The shape as GJK sees it, in body coordinates, unchecked (query.c). */
 tb_shape_proxy tb_shape_geom_proxy(const tb_shape* shape);
 /* A ray against the shape placed by xf, as the world's ray casts see it (chain
  * segments only from their front side) (query.c). */

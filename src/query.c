@@ -2,6 +2,7 @@
  * broad-phase trees, then the exact test against each candidate shape. */
 #include <float.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "memory.h"
 #include "distance.h"
@@ -16,15 +17,37 @@ static bool visible(const tb_shape* s, tb_query_filter f) {
          !(f.skip_sensors && s->sensor);
 }
 
+/* Copied as tb_make_*_proxy build it (unused points zero), without their
+ * checks: a world's shape was vetted when it was made, and the continuous
+ * pass takes a proxy for every shape it sweeps and every shape it sweeps
+ * against (tb_check_polygon there was 4.7% of junkyard's instructions). */
+static tb_shape_proxy proxy_of(const tb_vec2* points, int count, float radius) {
+  tb_shape_proxy proxy;
+  memset(&proxy, 0, sizeof proxy);
+  memcpy(proxy.points, points, (size_t)count * sizeof *points);
+  proxy.count = count;
+  proxy.radius = radius;
+  return proxy;
+}
+
 tb_shape_proxy tb_shape_geom_proxy(const tb_shape* s) {
   switch (s->type) {
-    case TB_SHAPE_CIRCLE: return tb_make_circle_proxy(&s->geom.circle);
-    case TB_SHAPE_CAPSULE: return tb_make_capsule_proxy(&s->geom.capsule);
-    case TB_SHAPE_SEGMENT: return tb_make_segment_proxy(&s->geom.segment);
-    case TB_SHAPE_CHAIN_SEGMENT: return tb_make_segment_proxy(&s->geom.chain_segment.segment);
+    case TB_SHAPE_CIRCLE: return proxy_of(&s->geom.circle.center, 1, s->geom.circle.radius);
+    case TB_SHAPE_CAPSULE: {
+      tb_vec2 centers[2] = {s->geom.capsule.center1, s->geom.capsule.center2};
+      return proxy_of(centers, 2, s->geom.capsule.radius);
+    }
+    case TB_SHAPE_SEGMENT: {
+      tb_vec2 ends[2] = {s->geom.segment.point1, s->geom.segment.point2};
+      return proxy_of(ends, 2, 0.0f);
+    }
+    case TB_SHAPE_CHAIN_SEGMENT: {
+      tb_vec2 ends[2] = {s->geom.chain_segment.segment.point1, s->geom.chain_segment.segment.point2};
+      return proxy_of(ends, 2, 0.0f);
+    }
     case TB_SHAPE_POLYGON: break;
   }
-  return tb_make_polygon_proxy(&s->geom.polygon);
+  return proxy_of(s->geom.polygon.vertices, s->geom.polygon.count, s->geom.polygon.radius);
 }
 
 void tb_shape_geom_ray_cast(const tb_shape* s, tb_transform xf, const tb_ray_input* ray, tb_cast_output* out) {
