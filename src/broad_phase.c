@@ -165,6 +165,7 @@ bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
   s->proxy = tb_tree_create_proxy_with_margin(&w->broad_phase.trees[s->tree], s->aabb, s->margin,
                                               s->filter.category_bits, shape_index);
   if (s->proxy == TB_TREE_NULL) return false;
+  s->fat_aabb = tb_tree_get_fat_aabb(&w->broad_phase.trees[s->tree], s->proxy);
   if (!queue_move(w, shape_index)) {
     tb_broad_phase_destroy_proxy(w, shape_index);
     return false;
@@ -230,8 +231,10 @@ void tb_broad_phase_move_proxy(tb_world* w, int shape_index, tb_vec2 displacemen
   displacement.y = fminf(fmaxf(displacement.y, -s->margin), s->margin);
   bool moved = enlarge ? tb_tree_enlarge_proxy(tree, s->proxy, s->aabb, s->margin, displacement)
                        : tb_tree_move_proxy_with_margin(tree, s->proxy, s->aabb, s->margin, displacement);
+  if (!moved) return; /* (the fat box is as it was) */
+  s->fat_aabb = tb_tree_get_fat_aabb(tree, s->proxy);
   /* out of memory here only delays pair finding to the proxy's next move */
-  if (moved) (void)queue_move(w, shape_index);
+  (void)queue_move(w, shape_index);
 }
 
 void tb_broad_phase_rebuild(tb_world* w) {
@@ -285,7 +288,7 @@ void tb_broad_phase_update_pairs(tb_world* w) {
     int shape_index = bp->move_buffer[i];
     if (shape_index < 0) continue;
     const tb_shape* s = tb_shape_at(w, shape_index);
-    tb_aabb fat = tb_tree_get_fat_aabb(&bp->trees[s->tree], s->proxy);
+    tb_aabb fat = s->fat_aabb;
     pair_query q = {w, shape_index};
     /* A dynamic proxy looks everywhere; others only among dynamic proxies.
      * Only proxies whose category the shape's mask takes can pair with it

@@ -514,12 +514,10 @@ bool tb_contact_face_runs_on(tb_world* w, int contact, bool max_end) {
 
 /* Updates one contact; false when it was destroyed (bounding boxes apart). */
 static bool update_contact(tb_world* w, int i) {
-  const tb_broad_phase* bp = &w->broad_phase;
   tb_contact* c = contact_at(w, i);
   const tb_shape* sa = tb_shape_at(w, c->shape_a);
   const tb_shape* sb = tb_shape_at(w, c->shape_b);
-  if (!aabbs_overlap(tb_tree_get_fat_aabb(&bp->trees[sa->tree], sa->proxy),
-                     tb_tree_get_fat_aabb(&bp->trees[sb->tree], sb->proxy))) {
+  if (!aabbs_overlap(sa->fat_aabb, sb->fat_aabb)) {
     tb_contact_destroy(w, i);
     return false;
   }

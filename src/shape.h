@@ -23,9 +23,10 @@ typedef struct tb_shape {
   int proxy; /* leaf in the tree of its body type, -1 when not in a tree */
   int tree;  /* which tree: the body type when the proxy was made */
   bool in_move_buffer;
-  tb_aabb aabb; /* tight, at the body's current transform */
-  float margin; /* how far its fat box reaches beyond aabb (tb_broad_phase_create_proxy) */
-  int chain;    /* the chain this segment belongs to, -1 for other shapes */
+  tb_aabb aabb;     /* tight, at the body's current transform */
+  tb_aabb fat_aabb; /* its proxy's box as the tree holds it: the narrow phase reads this, not the tree */
+  float margin;     /* how far its fat box reaches beyond aabb (tb_broad_phase_create_proxy) */
+  int chain;        /* the chain this segment belongs to, -1 for other shapes */
   void* user_data;
 } tb_shape;
 
