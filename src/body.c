@@ -55,7 +55,7 @@ void tb_body_keep_in_world(tb_body* b) {
   /* The shapes lie within max_extent of the centre. Floats near TB_MAX_LENGTH
    * are 1 m apart: two of those spacings absorb the rounding of their boxes,
    * so a shape that was inside stays insertable. */
-  float inner = fmaxf(TB_MAX_LENGTH - b->max_extent - 2.0f, 0.0f), edge = TB_MAX_LENGTH - 2.0f;
+  float inner = tb_maxf(TB_MAX_LENGTH - b->max_extent - 2.0f, 0.0f), edge = TB_MAX_LENGTH - 2.0f;
   tb_vec2 old = b->center;
   if (past(old.x, inner) == 0.0f && past(old.y, inner) == 0.0f && past(b->transform.p.x, TB_MAX_LENGTH) == 0.0f &&
       past(b->transform.p.y, TB_MAX_LENGTH) == 0.0f)
@@ -63,7 +63,7 @@ void tb_body_keep_in_world(tb_body* b) {
   /* Set the centre at the edge rather than subtract the overshoot: a body
    * flung to 1e12 m has an overshoot whose float rounding (65 km there) would
    * leave it beyond. Then the origin (which may lie off the shapes) likewise. */
-  tb_vec2 c = {fminf(fmaxf(old.x, -inner), inner), fminf(fmaxf(old.y, -inner), inner)};
+  tb_vec2 c = {tb_minf(tb_maxf(old.x, -inner), inner), tb_minf(tb_maxf(old.y, -inner), inner)};
   tb_vec2 p = tb_sub(c, tb_rotate(b->transform.q, b->local_center));
   tb_vec2 shift = {past(p.x, edge), past(p.y, edge)};
   b->center = tb_sub(c, shift);
@@ -87,25 +87,25 @@ static void shape_extents(const tb_body* b, const tb_shape* s, float* far_out, f
       thin = s->geom.circle.radius;
       break;
     case TB_SHAPE_CAPSULE:
-      far = fmaxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
+      far = tb_maxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
                   tb_length(tb_sub(s->geom.capsule.center2, b->local_center))) +
             s->geom.capsule.radius;
       thin = s->geom.capsule.radius;
       break;
     case TB_SHAPE_SEGMENT:
-      far = fmaxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
+      far = tb_maxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
                   tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
       break;
     case TB_SHAPE_CHAIN_SEGMENT:
-      far = fmaxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
+      far = tb_maxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
                   tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
       break;
     case TB_SHAPE_POLYGON: {
       const tb_polygon* p = &s->geom.polygon;
       thin = TB_MAX_LENGTH;
       for (int k = 0; k < p->count; ++k) {
-        far = fmaxf(far, tb_length(tb_sub(p->vertices[k], b->local_center)));
-        thin = fminf(thin, tb_dot(p->normals[k], tb_sub(p->vertices[k], p->centroid))); /* centroid to edge */
+        far = tb_maxf(far, tb_length(tb_sub(p->vertices[k], b->local_center)));
+        thin = tb_minf(thin, tb_dot(p->normals[k], tb_sub(p->vertices[k], p->centroid))); /* centroid to edge */
       }
       far += p->radius;
       thin += p->radius;
@@ -121,8 +121,8 @@ static void update_extents(tb_world* w, tb_body* b) {
   for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
     float far, thin;
     shape_extents(b, tb_shape_at(w, i), &far, &thin);
-    max_extent = fmaxf(max_extent, far);
-    min_extent = fminf(min_extent, thin);
+    max_extent = tb_maxf(max_extent, far);
+    min_extent = tb_minf(min_extent, thin);
   }
   b->max_extent = max_extent;
   b->min_extent = min_extent;
@@ -136,8 +136,8 @@ void tb_body_add_shape_mass(tb_world* w, tb_body* b, const tb_shape* s) {
   if (b->type == TB_STATIC_BODY && !b->mass_overridden && b->local_center.x == 0.0f && b->local_center.y == 0.0f) {
     float far, thin;
     shape_extents(b, s, &far, &thin);
-    b->max_extent = fmaxf(b->max_extent, far);
-    b->min_extent = fminf(b->min_extent, thin);
+    b->max_extent = tb_maxf(b->max_extent, far);
+    b->min_extent = tb_minf(b->min_extent, thin);
     return;
   }
   tb_body_update_mass(w, b);

@@ -152,8 +152,8 @@ static float shape_margin(const tb_shape* s, tb_body_type type) {
   float floor = tb_units.speculative_distance;
   if (type == TB_STATIC_BODY) return floor;
   tb_aabb local = tb_shape_geom_aabb(s, (tb_transform){{0.0f, 0.0f}, {1.0f, 0.0f}});
-  float extent = 0.5f * fmaxf(local.upper.x - local.lower.x, local.upper.y - local.lower.y);
-  return fminf(fmaxf(0.125f * extent, floor), tb_units.aabb_margin);
+  float extent = 0.5f * tb_maxf(local.upper.x - local.lower.x, local.upper.y - local.lower.y);
+  return tb_minf(tb_maxf(0.125f * extent, floor), tb_units.aabb_margin);
 }
 
 bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
@@ -227,8 +227,8 @@ void tb_broad_phase_move_proxy(tb_world* w, int shape_index, tb_vec2 displacemen
    * ones above and below it (24,000 pairs 300 steps in, against 14,700 capped
    * and Box2D v3's 15,100). Capped at the margin, pileup_1000's depth beyond
    * its force stays at 3.7 mm (6.4 mm without any stretch: its bound is 5). */
-  displacement.x = fminf(fmaxf(displacement.x, -s->margin), s->margin);
-  displacement.y = fminf(fmaxf(displacement.y, -s->margin), s->margin);
+  displacement.x = tb_minf(tb_maxf(displacement.x, -s->margin), s->margin);
+  displacement.y = tb_minf(tb_maxf(displacement.y, -s->margin), s->margin);
   bool moved = enlarge ? tb_tree_enlarge_proxy(tree, s->proxy, s->aabb, s->margin, displacement)
                        : tb_tree_move_proxy_with_margin(tree, s->proxy, s->aabb, s->margin, displacement);
   if (!moved) return; /* (the fat box is as it was) */

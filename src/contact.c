@@ -492,8 +492,8 @@ static __attribute__((noinline)) bool face_runs_on(const tb_world* w, const tb_c
                    {tb_add(end, tb_add(tb_scale(-e, out), tb_scale(e, normal))),
                     tb_add(end, tb_add(tb_scale(e, out), tb_scale(-e, normal)))},
                    false};
-  tb_aabb box = {{fminf(q.point[0].x, q.point[1].x), fminf(q.point[0].y, q.point[1].y)},
-                 {fmaxf(q.point[0].x, q.point[1].x), fmaxf(q.point[0].y, q.point[1].y)}};
+  tb_aabb box = {{tb_minf(q.point[0].x, q.point[1].x), tb_minf(q.point[0].y, q.point[1].y)},
+                 {tb_maxf(q.point[0].x, q.point[1].x), tb_maxf(q.point[0].y, q.point[1].y)}};
   for (int t = 0; t < 3 && !q.covered; ++t)
     tb_tree_query(&w->broad_phase.trees[t], box, UINT64_MAX, cover_callback, &q);
   return q.covered;

@@ -714,7 +714,7 @@ static __attribute__((noinline)) tb_f4 ask_ends(tb_wide_contact* c, const tb_ste
       c->slide_max[lane] = FLT_MAX;
     else
       c->slide_min[lane] = -FLT_MAX;
-    beyond[lane] = fmaxf(c->slide_min[lane] - d[lane], d[lane] - c->slide_max[lane]);
+    beyond[lane] = tb_maxf(c->slide_min[lane] - d[lane], d[lane] - c->slide_max[lane]);
   }
   return beyond;
 }
@@ -1468,7 +1468,7 @@ static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact
     float k = arms_at(wc, cp, lane, &ra, &rb), k_e = normal_k(wc, lane, rea, reb);
     float vn = normal_speed(sa, sb, ra, rb, n), vn_e = normal_speed(sa, sb, rea, reb, n);
     float eb = cc->restitution * before;
-    float target = sqrtf(fmaxf(vn * vn + k / k_e * (eb * eb - vn_e * vn_e), 0.0f));
+    float target = sqrtf(tb_maxf(vn * vn + k / k_e * (eb * eb - vn_e * vn_e), 0.0f));
     cc->target[p] = before > 0.0f ? -target : target; /* struck from behind: it approaches at e before */
     cc->bouncing |= 1 << p;
   }
@@ -1500,10 +1500,10 @@ static float apply_restitution(const tb_contact_constraint* cc, tb_wide_contact*
     tb_vec2 ra, rb;
     float k = arms_at(wc, cp, lane, &ra, &rb);
     float impulse = (cc->target[p] - normal_speed(sa, sb, ra, rb, n)) / k;
-    float total = fmaxf(cp->normal_impulse[lane] + impulse, 0.0f);
+    float total = tb_maxf(cp->normal_impulse[lane] + impulse, 0.0f);
     impulse = total - cp->normal_impulse[lane];
     cp->normal_impulse[lane] = total;
-    change = fmaxf(change, fabsf(impulse) * k);
+    change = tb_maxf(change, fabsf(impulse) * k);
     tb_vec2 P = tb_scale(impulse, n);
     sa->v = tb_mul_add(sa->v, -ma, P);
     sa->w -= ja * tb_cross(ra, P);
@@ -1541,7 +1541,7 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
   for (int pass = 0; first >= 0 && pass < TB_RESTITUTION_PASSES; ++pass) {
     float change = 0.0f;
     for (int k = first; k >= 0; k = cs[k].next_bouncing)
-      change = fmaxf(change, apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states));
+      change = tb_maxf(change, apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states));
     if (change <= TB_RESTITUTION_TOLERANCE) break;
   }
   /* the lanes' accumulated impulses are kept for the next step's warm start */

@@ -63,8 +63,8 @@ static float shape_min_extent(const tb_shape* s) {
   }
   const tb_polygon* p = &s->geom.polygon;
   float least = FLT_MAX;
-  for (int i = 0; i < p->count; ++i) least = fminf(least, tb_dot(p->normals[i], tb_sub(p->vertices[i], p->centroid)));
-  return fmaxf(least, 0.0f) + p->radius;
+  for (int i = 0; i < p->count; ++i) least = tb_minf(least, tb_dot(p->normals[i], tb_sub(p->vertices[i], p->centroid)));
+  return tb_maxf(least, 0.0f) + p->radius;
 }
 
 static bool boxes_overlap(tb_aabb a, tb_aabb b) {
@@ -199,7 +199,7 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
   sc.sweep = (tb_sweep){b->local_center, b->center0, b->center, b->angle0, b->angle};
   tb_transform xf1 = tb_sweep_transform(&sc.sweep, 0.0f), xf2 = tb_sweep_transform(&sc.sweep, 1.0f);
   float turn = fabsf(b->angle - b->angle0);
-  float growth = fminf(fminf(0.5f * turn, 0.125f * turn * turn), 2.0f);
+  float growth = tb_minf(tb_minf(0.5f * turn, 0.125f * turn * turn), 2.0f);
   for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
     const tb_shape* s = tb_shape_at(w, i);
     if (s->sensor) continue;
@@ -212,11 +212,11 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
     sc.extent = shape_min_extent(s);
     float reach2 = 0.0f;
     for (int k = 0; k < sc.proxy.count; ++k)
-      reach2 = fmaxf(reach2, tb_distance_sq(sc.proxy.points[k], b->local_center));
+      reach2 = tb_maxf(reach2, tb_distance_sq(sc.proxy.points[k], b->local_center));
     float grow = growth * sqrtf(reach2);
     tb_aabb a1 = tb_shape_geom_aabb(s, xf1), a2 = tb_shape_geom_aabb(s, xf2);
-    sc.box = (tb_aabb){{fminf(a1.lower.x, a2.lower.x) - grow, fminf(a1.lower.y, a2.lower.y) - grow},
-                       {fmaxf(a1.upper.x, a2.upper.x) + grow, fmaxf(a1.upper.y, a2.upper.y) + grow}};
+    sc.box = (tb_aabb){{tb_minf(a1.lower.x, a2.lower.x) - grow, tb_minf(a1.lower.y, a2.lower.y) - grow},
+                       {tb_maxf(a1.upper.x, a2.upper.x) + grow, tb_maxf(a1.upper.y, a2.upper.y) + grow}};
     /* The tree holds each proxy's category bits: the mask prunes, unless a
      * group (which overrides the bits) may be shared. */
     uint64_t mask = s->filter.group_index == 0 ? s->filter.mask_bits : UINT64_MAX;
@@ -245,9 +245,9 @@ static bool may_reach_static(const tb_world* w, const tb_body* b) {
   const tb_tree* tree = &w->broad_phase.trees[TB_STATIC_BODY];
   if (tree->root == TB_TREE_NULL) return false;
   float turn = fabsf(b->angle - b->angle0);
-  float r = b->max_extent * (1.0f + fminf(fminf(0.5f * turn, 0.125f * turn * turn), 2.0f));
-  tb_aabb box = {{fminf(b->center0.x, b->center.x) - r, fminf(b->center0.y, b->center.y) - r},
-                 {fmaxf(b->center0.x, b->center.x) + r, fmaxf(b->center0.y, b->center.y) + r}};
+  float r = b->max_extent * (1.0f + tb_minf(tb_minf(0.5f * turn, 0.125f * turn * turn), 2.0f));
+  tb_aabb box = {{tb_minf(b->center0.x, b->center.x) - r, tb_minf(b->center0.y, b->center.y) - r},
+                 {tb_maxf(b->center0.x, b->center.x) + r, tb_maxf(b->center0.y, b->center.y) + r}};
   tb_aabb root = tree->nodes[tree->root].aabb;
   return box.lower.x <= root.upper.x && root.lower.x <= box.upper.x && box.lower.y <= root.upper.y &&
          root.lower.y <= box.upper.y;

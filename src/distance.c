@@ -194,7 +194,7 @@ tb_segment_distance_output tb_segment_distance_unchecked(tb_vec2 p1, tb_vec2 q1,
   float cr = tb_cross(d1, d2);
   if (l1 > 0.0f && l2 > 0.0f && cr * cr <= 1e-14f * l1 * l2) { /* angle below ~1e-7 rad */
     float s0 = tb_dot(tb_sub(p2, p1), d1) / l1, s1 = tb_dot(tb_sub(q2, p1), d1) / l1;
-    float lo = fmaxf(0.0f, fminf(s0, s1)), hi = fminf(1.0f, fmaxf(s0, s1));
+    float lo = tb_maxf(0.0f, tb_minf(s0, s1)), hi = tb_minf(1.0f, tb_maxf(s0, s1));
     if (lo <= hi) {
       out.fraction1 = 0.5f * (lo + hi);
       out.fraction2 = point_segment_fraction(tb_mul_add(p1, out.fraction1, d1), p2, q2);
@@ -629,7 +629,7 @@ tb_transform tb_sweep_transform(const tb_sweep* sweep, float t) {
  * circle any core point moves on when the body turns. */
 static float sweep_reach(const tb_shape_proxy* p, tb_vec2 local_center) {
   float r2 = 0.0f;
-  for (int i = 0; i < p->count; ++i) r2 = fmaxf(r2, tb_distance_sq(p->points[i], local_center));
+  for (int i = 0; i < p->count; ++i) r2 = tb_maxf(r2, tb_distance_sq(p->points[i], local_center));
   return sqrtf(r2);
 }
 
@@ -757,7 +757,7 @@ static float core_distance_sq(const tb_vec2* v, const tb_vec2* normals, int n, t
   for (int i = 0; i < edges; ++i) {
     tb_vec2 a = v[i], b = v[(i + 1) % n];
     tb_vec2 q = tb_lerp(a, b, point_segment_fraction(p, a, b));
-    best = fminf(best, tb_distance_sq(p, q));
+    best = tb_minf(best, tb_distance_sq(p, q));
   }
   return best;
 }

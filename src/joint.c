@@ -64,7 +64,7 @@ static inline float soft_impulse(float mass, tb_softness s, float cdot, float c,
 /* The increment of a one-sided limit impulse, keeping the accumulated one >= 0. */
 static inline float limit_impulse(float mass, tb_softness s, float cdot, float c, float* accumulated) {
   float impulse = soft_impulse(mass, s, cdot, c, *accumulated);
-  float next = fmaxf(*accumulated + impulse, 0.0f);
+  float next = tb_maxf(*accumulated + impulse, 0.0f);
   impulse = next - *accumulated;
   *accumulated = next;
   return impulse;
@@ -73,7 +73,7 @@ static inline float limit_impulse(float mass, tb_softness s, float cdot, float c
 /* The increment that keeps the accumulated impulse within [-max, max]. */
 static inline float clamp_accumulate(float* accumulated, float impulse, float max) {
   float old = *accumulated;
-  float next = fminf(fmaxf(old + impulse, -max), max);
+  float next = tb_minf(tb_maxf(old + impulse, -max), max);
   *accumulated = next;
   return next - old;
 }

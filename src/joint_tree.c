@@ -543,7 +543,7 @@ static void body_mass(const tb_joint_tree* t, const tb_step_context* ctx, tb_jt_
       const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
       twist += point_twist(joint, joint->a == i);
     }
-    n->stiff = fmax((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0);
+    n->stiff = tb_maxd((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0);
   }
   memset(n->d, 0, sizeof n->d);
   n->d[0][0] = n->d[1][1] = 1.0 / (double)s->inv_mass;

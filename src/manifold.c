@@ -554,7 +554,7 @@ static void collide_on_face(local_manifold* m, const core* a, int edge, const co
   fp.n = core_normal(a, edge);
   tb_vec2 r1 = core_vertex(a, edge);
   fp.s = FLT_MAX;
-  for (int j = 0; j < b->count; ++j) fp.s = fminf(fp.s, tb_dot(fp.n, tb_sub(core_vertex(b, j), r1)));
+  for (int j = 0; j < b->count; ++j) fp.s = tb_minf(fp.s, tb_dot(fp.n, tb_sub(core_vertex(b, j), r1)));
   if (!(fp.s < a->radius + b->radius + tb_units.speculative_distance)) return;
   clip_to_face(m, fp);
 }

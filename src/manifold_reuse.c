@@ -60,7 +60,7 @@ bool tb_manifold_cache_reuse(const tb_manifold_cache* cache, tb_manifold* m, con
   tb_rot q0 = cache->relative_rot;
   tb_rot dq = {q.c * q0.c + q.s * q0.s, q.s * q0.c - q.c * q0.s};
   float turn = fabsf(dq.s) + (dq.c < 0.0f ? 2.0f : 0.0f);
-  float reach = fminf(a->max_extent, b->max_extent) * turn;
+  float reach = tb_minf(a->max_extent, b->max_extent) * turn;
   tb_vec2 moved[2];
   for (int i = 0; i < cache->point_count; ++i) {
     tb_vec2 anchor = tb_mul_add(cache->points[i], 0.5f * cache->separation[i], cache->normal);

@@ -31,6 +31,13 @@ static inline float tb_length(tb_vec2 v) { return sqrtf(v.x * v.x + v.y * v.y); 
 static inline float tb_distance_sq(tb_vec2 a, tb_vec2 b) { return tb_length_sq(tb_sub(a, b)); }
 static inline tb_vec2 tb_vmin(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y}; }
 static inline tb_vec2 tb_vmax(tb_vec2 a, tb_vec2 b) { return (tb_vec2){a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y}; }
+/* fminf and fmaxf as glibc's x86-64 ones answer (a NaN operand loses; of two
+ * zeros the second is returned), inline: libm's are calls (1.9% of
+ * junkyard's instructions), and other C libraries return +0 where glibc
+ * returns -0, which would change the bits across platforms. */
+static inline float tb_minf(float a, float b) { return a < b || b != b ? a : b; }
+static inline float tb_maxf(float a, float b) { return a > b || b != b ? a : b; }
+static inline double tb_maxd(double a, double b) { return a > b || b != b ? a : b; }
 /* Knuth's TwoSum per component: returns fl(a + b) and sets *error to the
  * part the rounding dropped, a + b - fl(a + b), exactly (any magnitudes; needs
  * no fused or reassociated arithmetic, which -ffp-contract=off and no

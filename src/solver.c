@@ -289,13 +289,13 @@ int tb_solve(tb_world* w, float dt, int substeps) {
   ctx.exact_h = (double)dt / (double)substeps;
   ctx.substeps = substeps;
   float most_hertz = TB_CONTACT_MAX_H_OMEGA / (TB_TWO_PI_F * h);
-  ctx.contact_hertz = fminf(w->contact_hertz, most_hertz);
-  ctx.static_hertz = fminf(2.0f * w->contact_hertz, most_hertz);
+  ctx.contact_hertz = tb_minf(w->contact_hertz, most_hertz);
+  ctx.static_hertz = tb_minf(2.0f * w->contact_hertz, most_hertz);
   ctx.contact_damping_ratio = w->contact_damping_ratio;
   ctx.contact_softness = tb_make_softness(ctx.contact_hertz, w->contact_damping_ratio, h);
   ctx.static_softness = tb_make_softness(ctx.static_hertz, w->contact_damping_ratio, h);
   ctx.joint_softness =
-      tb_make_softness(fminf(w->joint_hertz, TB_JOINT_MAX_H_OMEGA / (TB_TWO_PI_F * h)), w->joint_damping_ratio, h);
+      tb_make_softness(tb_minf(w->joint_hertz, TB_JOINT_MAX_H_OMEGA / (TB_TWO_PI_F * h)), w->joint_damping_ratio, h);
   ctx.contact_push_max_velocity = w->contact_push_max_velocity;
   ctx.restitution_threshold = w->restitution_threshold;
   ctx.max_linear_speed = w->maximum_linear_speed;
@@ -453,7 +453,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     tb_vec2 moved = tb_sub(b->center, b->center0);
     float turned = b->angle - b->angle0;
     if (w->enable_sleep && b->enable_sleep) {
-      float speed = fmaxf(tb_length(b->linear_velocity), b->max_extent * fabsf(b->angular_velocity));
+      float speed = tb_maxf(tb_length(b->linear_velocity), b->max_extent * fabsf(b->angular_velocity));
       /* a kinematic body moves by script: while it moves at all it stays
        * awake (a shapeless one spinning has no extent, yet its joints turn) */
       bool scripted = b->type == TB_KINEMATIC_BODY && (speed > 0.0f || b->angular_velocity != 0.0f);
@@ -467,7 +467,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
      * would sink into static geometry before the contact catches them */
     if (w->enable_continuous && b->type == TB_DYNAMIC_BODY)
       b->is_fast = b->is_bullet || tb_length(moved) + b->max_extent * fabsf(turned) >
-                                       fminf(0.5f * b->min_extent, tb_units.speculative_distance);
+                                       tb_minf(0.5f * b->min_extent, tb_units.speculative_distance);
   }
   return bad;
 }

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdbool.h>
 
+#include "math_internal.h"
 #include "tumble.h"
 
 /* What the solver moves: velocities plus the motion since the step began.
@@ -96,7 +97,7 @@ static inline tb_vec2 tb_cap_linear_speed(tb_vec2 v, float max_speed) {
   if (isfinite(speed_sq)) {
     scale = max_speed / sqrtf(speed_sq);
   } else {
-    float big = fmaxf(fabsf(v.x), fabsf(v.y));
+    float big = tb_maxf(fabsf(v.x), fabsf(v.y));
     float ux = v.x / big, uy = v.y / big;
     scale = (max_speed / big) / sqrtf(ux * ux + uy * uy);
   }
