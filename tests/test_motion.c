@@ -417,6 +417,28 @@ START_TEST(force_field_sees_only_finite_states) {
 }
 END_TEST
 
+/* Without a field the stages are not checked one by one (motion.c,
+ * derivative): an applied force that overflows a stage's velocity must still
+ * fail the step (TB_ERR_NUMERIC) and leave the body as it was, under every
+ * scheme. */
+START_TEST(overflowing_force_without_field_leaves_body) {
+  for (int scheme = TB_INTEGRATOR_SEMI_IMPLICIT_EULER; scheme <= TB_INTEGRATOR_RK4; ++scheme) {
+    tb_world_def def = tb_default_world_def();
+    def.integrator = (tb_integrator)scheme;
+    tb_world_id w = tb_create_world(&def);
+    tb_body_id b = dynamic_disc(w, (tb_vec2){1.0f, 2.0f}, (tb_vec2){3.0f, 0.0f}, 0.5f);
+    ck_assert_int_eq(tb_body_set_mass_data(b, (tb_mass_data){1e-30f, {0.0f, 0.0f}, 1e-30f}), TB_OK);
+    ck_assert_int_eq(tb_body_apply_force_to_center(b, (tb_vec2){1e18f, 1e18f}), TB_OK);
+    ck_assert_int_eq(tb_world_step(w, 1.0f / 60.0f, 4), TB_ERR_NUMERIC);
+    ck_assert_float_eq(tb_body_get_position(b).x, 1.0f);
+    ck_assert_float_eq(tb_body_get_position(b).y, 2.0f);
+    ck_assert_float_eq(tb_body_get_linear_velocity(b).x, 3.0f);
+    ck_assert_float_eq(tb_body_get_angular_velocity(b), 0.5f);
+    tb_destroy_world(w);
+  }
+}
+END_TEST
+
 /* The shortest accepted substep, TB_MIN_SUBSTEP, is usable (issue 23: 1e-45
  * and FLT_MIN were accepted, then every step failed with TB_ERR_NUMERIC): a
  * box resting on the ground and one sliding into it at the speed cap step
@@ -458,6 +480,7 @@ static Suite* motion_suite(void) {
   tcase_add_test(tc, callbacks_cannot_change_the_world);
   tcase_add_test(tc, speed_caps_hold_for_free_and_kinematic_bodies);
   tcase_add_test(tc, force_field_sees_only_finite_states);
+  tcase_add_test(tc, overflowing_force_without_field_leaves_body);
   tcase_add_test(tc, shortest_step_is_usable);
   suite_add_tcase(s, tc);
   return s;
