@@ -88,17 +88,17 @@ static void shape_extents(const tb_body* b, const tb_shape* s, float* far_out, f
       break;
     case TB_SHAPE_CAPSULE:
       far = tb_maxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
-                  tb_length(tb_sub(s->geom.capsule.center2, b->local_center))) +
+                    tb_length(tb_sub(s->geom.capsule.center2, b->local_center))) +
             s->geom.capsule.radius;
       thin = s->geom.capsule.radius;
       break;
     case TB_SHAPE_SEGMENT:
       far = tb_maxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
-                  tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
+                    tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
       break;
     case TB_SHAPE_CHAIN_SEGMENT:
       far = tb_maxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
-                  tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
+                    tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
       break;
     case TB_SHAPE_POLYGON: {
       const tb_polygon* p = &s->geom.polygon;
