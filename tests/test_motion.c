@@ -424,7 +424,9 @@ END_TEST
 
 /* Without a field the stages are not checked one by one (motion.c,
  * derivative): an applied force that overflows a stage's velocity must still
- * fail the step (TB_ERR_NUMERIC) and leave the body as it was. */
+ * fail the step (TB_ERR_NUMERIC) and leave the body as it was. (An end to end
+ * check: the step's own check of the bodies' end states would also catch a
+ * non-finite integration, so this does not isolate the substeps' check.) */
 START_TEST(overflowing_force_without_field_leaves_body) { overflowing_push_leaves_body(false); }
 END_TEST
 
