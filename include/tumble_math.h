@@ -10,12 +10,11 @@
  * -ffp-contract=off and without -ffast-math, as tumble is: a compiler that
  * fuses a * b + c into one rounding changes the last bit.
  *
- * Angles: tb_rot_from_angle uses cosf and sinf and tb_rot_get_angle atan2f,
- * from the C library. The engine turns body angles into rotations with the
- * same cosf and sinf (so the result matches the engine's bit for bit on one
- * machine), but C libraries may round them differently: code that must give
- * the same bits on every platform should keep rotations (tb_rot) rather than
- * angles, or use tb_rot_mul and tb_rot_nlerp, which are plain arithmetic.
+ * Angles: tb_rot_from_angle computes its cosine and sine itself, in double
+ * arithmetic only (no C library call), and the engine turns body angles into
+ * rotations with this very function: the same bits on every platform with
+ * IEEE double arithmetic (C libraries' cosf and sinf may round differently).
+ * tb_rot_get_angle uses the C library's atan2f, and the engine never does.
  *
  * Nothing here checks its input: these are the building blocks, NaN in gives
  * NaN out. The _is_valid functions tell what the engine's entry points accept. */
@@ -126,10 +125,55 @@ static inline tb_rot tb_rot_identity(void) {
   tb_rot out = {1.0f, 0.0f};
   return out;
 }
-/* (cos angle, sin angle) by the C library's cosf and sinf, as the engine
- * computes a body's rotation from its angle (see the top of this file). */
+/* (cos angle, sin angle) within one unit in the last place (correctly
+ * rounded but for about one angle in ten thousand), the same bits on every
+ * platform; NaN for an infinite or NaN angle. The engine computes a body's
+ * rotation from its angle with it (see the top of this file).
+ *
+ * How: angle = k pi/2 + r with |r| <= pi/4, in double, pi/2 split into a
+ * 33-bit head (so that k times it is exact for |k| < 2^20: every angle the
+ * engine accepts, |angle| <= TB_MAX_ANGLE) and a tail; then the Taylor series
+ * of sin r to r^11 and of cos r to r^12, whose first omitted terms are below
+ * 7e-12 on |r| <= pi/4 against a float's half unit of at least 3e-8 (relative).
+ * Beyond 2^20 rad the angle is first folded into [0, 2 pi) exactly (steps of
+ * the double nearest 2 pi times powers of two, each subtraction exact): the
+ * fold's own error, the angle over 2 pi times 2.45e-16, stays below 2e-7 rad
+ * up to 2^32 rad, where a float angle is already 512 rad coarse. */
 static inline tb_rot tb_rot_from_angle(float angle) {
-  tb_rot out = {cosf(angle), sinf(angle)};
+  const double two_pi = 6.283185307179586232; /* the double nearest 2 pi */
+  const double two_over_pi = 0.63661977236758134308;
+  const double half_pi_head = 1.57079632673412561417;     /* pi/2 to 33 bits */
+  const double half_pi_tail = 6.07710050650619224932e-11; /* pi/2 - half_pi_head */
+  double x = (double)angle;
+  if (!isfinite(x) || x == 0.0) { /* NaN; and +-0, whose sine keeps the sign */
+    tb_rot ends = {x == 0.0 ? 1.0f : NAN, x == 0.0 ? angle : NAN};
+    return ends;
+  }
+  double sign = 1.0;
+  if (fabs(x) > 1048576.0) { /* 2^20: fold |x| into [0, 2 pi) */
+    sign = x < 0.0 ? -1.0 : 1.0;
+    x = fabs(x);
+    double m = two_pi;
+    while (m * 2.0 <= x) m *= 2.0;
+    for (; m >= two_pi; m *= 0.5) /* x < 2 m, so x - m is exact */
+      if (x >= m) x -= m;
+  }
+  /* nearest k (ties away from zero; |k| < 2^20 here) */
+  double kd = x * two_over_pi;
+  long k = (long)(kd < 0.0 ? kd - 0.5 : kd + 0.5);
+  double r = (x - (double)k * half_pi_head) - (double)k * half_pi_tail, r2 = r * r, r4 = r2 * r2;
+  /* the series in r^2 grouped in pairs (Estrin), a shorter chain than Horner's */
+  double sin_r = r + r * r2 *
+                         ((-1.0 / 6.0 + r2 * (1.0 / 120.0)) +
+                          r4 * ((-1.0 / 5040.0 + r2 * (1.0 / 362880.0)) + r4 * (-1.0 / 39916800.0)));
+  double cos_r = 1.0 + r2 * ((-0.5 + r2 * (1.0 / 24.0)) + r4 * ((-1.0 / 720.0 + r2 * (1.0 / 40320.0)) +
+                                                                r4 * (-1.0 / 3628800.0 + r2 * (1.0 / 479001600.0))));
+  /* the quadrant k mod 4 (also for k < 0): cos, sin turned k quarter turns */
+  unsigned long q = (unsigned long)k;
+  double c = (q & 1u) ? sin_r : cos_r, s = (q & 1u) ? cos_r : sin_r;
+  c = ((q + 1u) & 2u) ? -c : c;
+  s = (q & 2u) ? -s : s;
+  tb_rot out = {(float)c, (float)(sign * s)};
   return out;
 }
 /* The angle of a rotation in [-pi, pi] (atan2f). */

@@ -6,6 +6,7 @@
 #include <stdbool.h>
 
 #include "tumble.h"
+#include "tumble_math.h"
 
 /* 2 pi in float: hertz to angular frequency (softness of contacts and joints) */
 #define TB_TWO_PI_F (2.0f * 3.14159265358979f)
@@ -78,7 +79,8 @@ static inline float tb_saturate(double x) {
 }
 static inline tb_vec2 tb_saturate2(double x, double y) { return (tb_vec2){tb_saturate(x), tb_saturate(y)}; }
 
-static inline tb_rot tb_make_rot(float angle) { return (tb_rot){cosf(angle), sinf(angle)}; }
+/* no C library call: the same bits on every platform (tumble_math.h) */
+static inline tb_rot tb_make_rot(float angle) { return tb_rot_from_angle(angle); }
 static inline tb_vec2 tb_rotate(tb_rot q, tb_vec2 v) { return (tb_vec2){q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y}; }
 static inline tb_vec2 tb_inv_rotate(tb_rot q, tb_vec2 v) {
   return (tb_vec2){q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};

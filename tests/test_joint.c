@@ -892,6 +892,38 @@ START_TEST(motor_joint_reaches_offset) {
 }
 END_TEST
 
+/* correction_factor c is the share of the error corrected per step, whatever
+ * the substeps: each of n substeps drives the error at rate r (velocity -r C,
+ * exact for one free box whose anchor is its centre), so it shrinks by
+ * (1 - r h)^n = 1 - c when r h = 1 - (1 - c)^(1/n). One step from 1 m off
+ * moves the box c metres, up to float rounding (relative 1e-7 a substep):
+ * 1e-5. A small factor used to vanish: the root in float (powf(1 - c, 1 / n))
+ * rounds to 1 for c below about n times 6e-8, and misses by up to 20% near it. */
+START_TEST(motor_joint_corrects_its_factor_per_step) {
+  const float factors[] = {0.9f, 0.3f, 1e-3f, 1e-6f};
+  const int substeps[] = {1, 3, 4, 64};
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 4; ++k) {
+      tb_world_id w = tbt_world(0.0f, 0.0f);
+      tb_body_id ground = static_body(w, (tb_vec2){0.0f, 0.0f});
+      tb_body_id box = tbt_box_body(w, 0.0f, 0.0f, 0.5f, 0.5f);
+      tb_motor_joint_def jd = tb_default_motor_joint_def();
+      jd.body_a = ground;
+      jd.body_b = box;
+      jd.linear_offset = (tb_vec2){1.0f, 0.0f};
+      jd.max_force = 1e6f;
+      jd.max_torque = 1e6f;
+      jd.correction_factor = factors[i];
+      ck_assert(!tb_joint_id_is_null(tb_create_motor_joint(w, &jd)));
+      ck_assert_int_eq(tb_world_step(w, DT, substeps[k]), TB_OK);
+      double moved = tb_body_get_position(box).x;
+      ck_assert_msg(fabs(moved - factors[i]) <= 1e-5 * factors[i], "c = %g, %d substeps: moved %.9g", (double)factors[i],
+                    substeps[k], moved);
+      tb_destroy_world(w);
+    }
+}
+END_TEST
+
 /* ---- reaction forces ------------------------------------------------------------ */
 
 /* A 2 kg disc hanging at rest from a pin (and, separately, from a rigid
@@ -1854,6 +1886,7 @@ static Suite* joint_suite(void) {
   tcase_add_test(physics, wheel_spring_and_motor);
   tcase_add_test(physics, mouse_pulls_to_target);
   tcase_add_test(physics, motor_joint_reaches_offset);
+  tcase_add_test(physics, motor_joint_corrects_its_factor_per_step);
   tcase_add_test(physics, reaction_force_of_hanging_mass);
   tcase_add_test(physics, reaction_force_saturates_at_max_value);
   tcase_add_test(physics, revolute_angle_is_continuous);

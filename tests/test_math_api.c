@@ -4,6 +4,7 @@
  * closed forms; the implicit spring-damper step's stability and decay; handle
  * equality and packing. */
 #include <float.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "../src/math_internal.h"
@@ -67,6 +68,77 @@ START_TEST(public_math_matches_the_engine_bit_for_bit) {
 END_TEST
 
 /* ---- rotations and transforms --------------------------------------------------- */
+
+static int ulps_apart(float a, float b) {
+  if (a == b) return 0;
+  int32_t x, y;
+  memcpy(&x, &a, sizeof x);
+  memcpy(&y, &b, sizeof y);
+  if (x < 0) x = INT32_MIN - x; /* sign-magnitude to a monotone integer line */
+  if (y < 0) y = INT32_MIN - y;
+  int64_t d = (int64_t)x - (int64_t)y;
+  return d > 1000000 || d < -1000000 ? 1000000 : (int)(d < 0 ? -d : d);
+}
+
+/* tb_rot_from_angle computes cos and sin itself (the engine turns every body
+ * angle into a rotation with it), so that C libraries' rounding cannot make
+ * two platforms' worlds differ. Against the correctly rounded values (the C
+ * library's double cos and sin, rounded to float): never more than one unit
+ * in the last place apart, and rarely that. The series' own error is at most
+ * 7e-12 (relative, at |r| = pi/4, tumble_math.h), which misrounds a value
+ * only when the true value lies that close to the midpoint between two
+ * floats, at most 2 x 7e-12 / 6e-8 = 2.3e-4 of them (measured: 6e-6). */
+START_TEST(rotation_from_angle_is_correctly_rounded_but_rarely) {
+  unsigned rng = 99u;
+  long values = 0, off = 0;
+  int worst = 0;
+  for (int i = 0; i < 400000; ++i) {
+    /* the angles bodies have (a few turns) and all the engine accepts */
+    float range = i % 2 == 0 ? (float)(8.0 * PI_D) : TB_MAX_ANGLE;
+    float x = tbt_rand(&rng, -range, range);
+    tb_rot q = tb_rot_from_angle(x);
+    int dc = ulps_apart(q.c, (float)cos((double)x)), ds = ulps_apart(q.s, (float)sin((double)x));
+    worst = dc > worst ? dc : worst;
+    worst = ds > worst ? ds : worst;
+    off += (dc != 0) + (ds != 0);
+    values += 2;
+  }
+  ck_assert_msg(worst <= 1, "%d ulp from the correctly rounded value", worst);
+  ck_assert_msg((double)off <= 2.3e-4 * (double)values, "%ld of %ld values misrounded", off, values);
+
+  /* the bits themselves, the same on every platform: these are the correctly
+   * rounded values */
+  static const float pinned[][3] = {
+      {0.5f, 0x1.c1528p-1f, 0x1.eaee88p-2f},           {1.0f, 0x1.14a28p-1f, 0x1.aed548p-1f},
+      {-2.0f, -0x1.aa2266p-2f, -0x1.d18f6ep-1f},       {3.0f, -0x1.fae04cp-1f, 0x1.210386p-3f},
+      {100.0f, 0x1.b981dcp-1f, -0x1.03425cp-1f},       {-1234.5f, -0x1.fa8f2cp-1f, -0x1.29c532p-3f},
+      {123456.703f, -0x1.17f18ap-5f, -0x1.ffb372p-1f}, {1.0e6f, 0x1.df9dfap-1f, -0x1.6664b2p-2f}};
+  for (size_t k = 0; k < sizeof pinned / sizeof pinned[0]; ++k) {
+    tb_rot q = tb_rot_from_angle(pinned[k][0]);
+    ck_assert_msg(same_f(q.c, pinned[k][1]) && same_f(q.s, pinned[k][2]), "angle %g: (%a, %a)", (double)pinned[k][0],
+                  (double)q.c, (double)q.s);
+  }
+
+  /* zeros keep the sine's sign, as the C library's do; no angle, no rotation */
+  ck_assert(same_f(tb_rot_from_angle(-0.0f).s, -0.0f) && same_f(tb_rot_from_angle(0.0f).s, 0.0f));
+  ck_assert(tb_rot_from_angle(-0.0f).c == 1.0f);
+  const float none[] = {NAN, INFINITY, -INFINITY};
+  for (int k = 0; k < 3; ++k) ck_assert(isnan(tb_rot_from_angle(none[k]).c) && isnan(tb_rot_from_angle(none[k]).s));
+
+  /* beyond 2^20 rad (body angles after hours of spinning) the exact fold
+   * into [0, 2 pi) by the double nearest 2 pi errs by the angle / 2 pi times
+   * 2.45e-16: under 2e-7 rad up to 2^32 rad, plus the float's half unit */
+  for (int i = 0; i < 20000; ++i) {
+    float x = tbt_rand(&rng, -1.0f, 1.0f) * powf(2.0f, tbt_rand(&rng, 20.0f, 32.0f));
+    tb_rot q = tb_rot_from_angle(x);
+    ck_assert_near(q.c, cos((double)x), 2e-7 + 6e-8);
+    ck_assert_near(q.s, sin((double)x), 2e-7 + 6e-8);
+  }
+  /* any finite angle, up to FLT_MAX, gives a rotation */
+  const float huge[] = {FLT_MAX, -FLT_MAX, 1e30f, 0x1p100f};
+  for (int k = 0; k < 4; ++k) ck_assert(tb_rot_is_valid(tb_rot_from_angle(huge[k])));
+}
+END_TEST
 
 /* Rotations of unit length multiply with about 2 ulp of rounding per
  * component; 1e-6 covers a few products of values <= 1. */
@@ -264,6 +336,7 @@ static Suite* math_api_suite(void) {
   TCase* tc = tcase_create("math_api");
   tcase_set_timeout(tc, 60);
   tcase_add_test(tc, public_math_matches_the_engine_bit_for_bit);
+  tcase_add_test(tc, rotation_from_angle_is_correctly_rounded_but_rarely);
   tcase_add_test(tc, rotations_against_closed_forms);
   tcase_add_test(tc, transforms_compose_and_invert);
   tcase_add_test(tc, vectors_and_boxes);
