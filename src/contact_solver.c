@@ -104,6 +104,7 @@ typedef struct tb_wide_contact {
   int32_t ends_near;  /* bit 2 lane + end (0: min, 1: max): the end lies within reach of this step */
   int32_t ends_asked; /* the same bits: tb_contact_face_runs_on answered this step */
   int32_t pair;       /* +1: solved with the next block, -1: with the one before, 0: alone (see solve_pair) */
+  int32_t isolated;   /* every lane's moving bodies have this contact alone: its relax solve iterates (solve_wide) */
   tb_f4 nx, ny, friction, tangent_speed;
   tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
   tb_f4 bias_rate, mass_scale;
@@ -388,7 +389,8 @@ static void clear_lanes(tb_wide_contact* wc, const int32_t* k, int static_index)
  * colours of their own from *fixed_from on, those with a body that does not
  * move (static or kinematic), so that every pass solves them last (see
  * tb_contact_solver_solve). Returns the number of colours, each contact's
- * in its lane field. Needs scratch for bodies + 4 x contacts ints. */
+ * in its lane field, and each moving solver body's contact_degree. Needs
+ * scratch for bodies + 4 x contacts ints. */
 static int color_constraints(tb_world* w, const tb_step_context* ctx, int* fixed_from) {
   int bodies = ctx->static_index + 1, count = w->step_contact_count;
   uint32_t* bits = (uint32_t*)w->scratch;
@@ -396,12 +398,17 @@ static int color_constraints(tb_world* w, const tb_step_context* ctx, int* fixed
    * pairs from the front, the others from the back */
   int32_t* waiting = w->scratch + bodies;
   int pairs = 0, end = count;
+  uint8_t* degree = w->contact_degree;
+  memset(degree, 0, (size_t)bodies);
   for (int k = 0; k < count; ++k) {
     const tb_contact* c = step_contact(w, k);
-    int a = solver_index(ctx, tb_body_at(w, c->edges[0].body));
-    int b = solver_index(ctx, tb_body_at(w, c->edges[1].body));
+    const tb_body *body_a = tb_body_at(w, c->edges[0].body), *body_b = tb_body_at(w, c->edges[1].body);
+    int a = solver_index(ctx, body_a);
+    int b = solver_index(ctx, body_b);
     a = ctx->states[a].inv_mass > 0.0f ? a : -1;
     b = ctx->states[b].inv_mass > 0.0f ? b : -1;
+    if (a >= 0) degree[a] = degree[a] > 0 || body_a->joint_count > 0 ? 2 : 1;
+    if (b >= 0) degree[b] = degree[b] > 0 || body_b->joint_count > 0 ? 2 : 1;
     int32_t* e = a < 0 || b < 0 ? &waiting[3 * --end] : &waiting[3 * pairs++];
     e[0] = k;
     e[1] = a;
@@ -503,17 +510,33 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
   return true;
 }
 
+/* Whether each lane's moving bodies (inverse mass > 0) have no constraint
+ * but this contact: a box alone on the ground, two balls meeting in the air.
+ * Such a block's relax solve is the whole of its bodies' relax problem, so
+ * solve_wide iterates it to convergence within one pass (no gather, scatter
+ * or sweep between the rounds) instead of the passes repeating over
+ * everything; an unused lane (the static dummy on both sides) qualifies. */
+static int32_t lanes_isolated(const uint8_t* degree, const tb_wide_contact* c) {
+  int32_t isolated = 1;
+  for (int lane = 0; lane < 4; ++lane)
+    isolated &= (c->ma[lane] == 0.0f || degree[c->a[lane]] == 1) & (c->mb[lane] == 0.0f || degree[c->b[lane]] == 1);
+  return isolated;
+}
+
 /* Pairs of blocks of one colour, which a pass solves eight lanes at a time
  * where the processor can (solve_pair). end_lane[c] is the lane after colour
- * c's last contact. */
+ * c's last contact. An isolated block stays alone: its relax solve iterates
+ * (solve_wide). */
 static void pair_blocks(tb_wide_contact* wide, const int* end_lane, int colors) {
   int from = 0;
   for (int c = 0; c < colors; ++c) {
     int to = (end_lane[c] + 3) / 4;
     for (int b = from; b < to; ++b) wide[b].pair = 0;
-    for (int b = from; b + 1 < to; b += 2) {
+    for (int b = from; b + 1 < to; ++b) {
+      if (wide[b].isolated || wide[b + 1].isolated) continue;
       wide[b].pair = 1;
       wide[b + 1].pair = -1;
+      ++b;
     }
     from = to;
   }
@@ -522,7 +545,8 @@ static void pair_blocks(tb_wide_contact* wide, const int* end_lane, int colors) 
 bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int count = w->step_contact_count;
   if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
-      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 4 * count, sizeof(int)))
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 4 * count, sizeof(int)) ||
+      !tb_array_reserve((void**)&w->contact_degree, &w->degree_capacity, ctx->static_index + 1, 1))
     return false;
   int fixed_from = 0;
   int colors = color_constraints(w, ctx, &fixed_from);
@@ -563,6 +587,7 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
         if (k[4 + lane] >= 0) __builtin_prefetch(tb_pool_at(&w->contacts, w->step_contacts[k[4 + lane]]));
     prepare_block(w, ctx, k, &wide[b]);
     if ((k[0] | k[1] | k[2] | k[3]) < 0) clear_lanes(&wide[b], k, ctx->static_index);
+    wide[b].isolated = lanes_isolated(w->contact_degree, &wide[b]);
   }
   pair_blocks(wide, next_lane, colors);
   return collect_deep_contacts(w, ctx);
@@ -848,67 +873,76 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   tb_f4 s1 = stored ? p1->separation : normal_motion(c, &c->q[0], &A, &B) + c->q[0].base_separation;
   tb_f4 s2 = stored ? p2->separation : normal_motion(c, &c->q[1], &A, &B) + c->q[1].base_separation;
   if (measure) p1->separation = s1, p2->separation = s2;
-  tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, s1, inv_h, push, use_bias, &ms1);
-  tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, s2, inv_h, push, use_bias, &ms2);
-  tb_f4 a1 = p1->normal_impulse, a2 = p2->normal_impulse;
-  /* Both points at once (Box2D 2.4's block solver for the mixed LCP
-   * x >= 0, K x + r0 >= 0, complementary; here scaled by mass_scale): the
-   * first case that holds wins: both push; only 1; only 2; neither. Lanes
-   * with one point (or a near-singular K) take the one-point case. */
-  tb_i4 two = c->block > zero;
-  tb_f4 r1 = t1 - c->k11 * a1 - c->k12 * a2; /* v0_1 + bias_1 */
-  tb_f4 r2 = t2 - c->k12 * a1 - c->k22 * a2;
-  tb_f4 x1 = a1, x2 = a2; /* no case holds (round-off): keep the impulses */
-  tb_i4 none = (r1 >= zero) & (~two | (r2 >= zero));
-  x1 = blend(none, zero, x1);
-  x2 = blend(none, zero, x2);
-  tb_f4 only2 = -ms2 * p2->normal_mass * r2;
-  tb_i4 second = two & (only2 >= zero) & (r1 + c->k12 * only2 >= zero);
-  x1 = blend(second, zero, x1);
-  x2 = blend(second, only2, x2);
-  tb_f4 only1 = -ms1 * p1->normal_mass * r1;
-  tb_i4 first = (only1 >= zero) & (~two | (r2 + c->k12 * only1 >= zero));
-  x1 = blend(first, only1, x1);
-  x2 = blend(first, zero, x2);
-  tb_f4 both1 = -ms1 * (c->n11 * r1 + c->n12 * r2), both2 = -ms2 * (c->n12 * r1 + c->n22 * r2);
-  tb_i4 both = two & (both1 >= zero) & (both2 >= zero);
-  x1 = blend(both, both1, x1);
-  x2 = blend(both, both2, x2);
-  p1->normal_impulse = x1;
-  tb_f4 d1 = x1 - a1;
-  apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
-  if (c->bouncy) {
-    count_normal(&c->q[0], &arms1, d1);
-    c->q[0].max_normal_impulse = max4(c->q[0].max_normal_impulse, x1);
+  /* An isolated block's relax solve (lanes_isolated) repeats, up to
+   * relax_iterations rounds, until no point's speed changes by more than
+   * TB_RELAX_TOLERANCE: what the passes would do over it, without their
+   * sweeps over everything else. Its stop and record see the last round. */
+  int rounds = !use_bias && c->isolated ? ctx->world->relax_iterations : 1;
+  tb_f4 normal_change, moved;
+  for (int round = 1;; ++round) {
+    tb_f4 t1 = normal_target(c, p1, &arms1, &A, &B, s1, inv_h, push, use_bias, &ms1);
+    tb_f4 t2 = normal_target(c, p2, &arms2, &A, &B, s2, inv_h, push, use_bias, &ms2);
+    tb_f4 a1 = p1->normal_impulse, a2 = p2->normal_impulse;
+    /* Both points at once (Box2D 2.4's block solver for the mixed LCP
+     * x >= 0, K x + r0 >= 0, complementary; here scaled by mass_scale): the
+     * first case that holds wins: both push; only 1; only 2; neither. Lanes
+     * with one point (or a near-singular K) take the one-point case. */
+    tb_i4 two = c->block > zero;
+    tb_f4 r1 = t1 - c->k11 * a1 - c->k12 * a2; /* v0_1 + bias_1 */
+    tb_f4 r2 = t2 - c->k12 * a1 - c->k22 * a2;
+    tb_f4 x1 = a1, x2 = a2; /* no case holds (round-off): keep the impulses */
+    tb_i4 none = (r1 >= zero) & (~two | (r2 >= zero));
+    x1 = blend(none, zero, x1);
+    x2 = blend(none, zero, x2);
+    tb_f4 only2 = -ms2 * p2->normal_mass * r2;
+    tb_i4 second = two & (only2 >= zero) & (r1 + c->k12 * only2 >= zero);
+    x1 = blend(second, zero, x1);
+    x2 = blend(second, only2, x2);
+    tb_f4 only1 = -ms1 * p1->normal_mass * r1;
+    tb_i4 first = (only1 >= zero) & (~two | (r2 + c->k12 * only1 >= zero));
+    x1 = blend(first, only1, x1);
+    x2 = blend(first, zero, x2);
+    tb_f4 both1 = -ms1 * (c->n11 * r1 + c->n12 * r2), both2 = -ms2 * (c->n12 * r1 + c->n22 * r2);
+    tb_i4 both = two & (both1 >= zero) & (both2 >= zero);
+    x1 = blend(both, both1, x1);
+    x2 = blend(both, both2, x2);
+    p1->normal_impulse = x1;
+    tb_f4 d1 = x1 - a1;
+    apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
+    if (c->bouncy) {
+      count_normal(&c->q[0], &arms1, d1);
+      c->q[0].max_normal_impulse = max4(c->q[0].max_normal_impulse, x1);
+    }
+    p2->normal_impulse = x2;
+    tb_f4 d2 = x2 - a2;
+    apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
+    if (c->bouncy) {
+      count_normal(&c->q[1], &arms2, d2);
+      c->q[1].max_normal_impulse = max4(c->q[1].max_normal_impulse, x2);
+    }
+    /* the normal speed each point's change made (its own K_ii; the coupling
+     * term is left out), for the relax passes' stop */
+    normal_change = max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22);
+    tb_f4 f1 = solve_friction(c, p1, &arms1, &A, &B);
+    tb_f4 f2 = solve_friction(c, p2, &arms2, &A, &B);
+    /* the points' speed changes, friction's taken at the normal K (the same
+     * order as the tangent one): the relax passes' record (relax_activity.h) */
+    moved = max4(normal_change, max4(max4(f1, -f1) * c->k11, max4(f2, -f2) * c->k22));
+    if (c->rolling) {
+      tb_f4 limit = c->rolling_resistance * (x1 + x2);
+      tb_f4 impulse = -c->rolling_mass * (B.w - A.w);
+      tb_f4 total = min4(max4(c->rolling_impulse + impulse, -limit), limit);
+      impulse = total - c->rolling_impulse;
+      c->rolling_impulse = total;
+      A.w -= c->ja * impulse;
+      B.w += c->jb * impulse;
+    }
+    if (round >= rounds) break;
+    tb_i4 moving = moved > splat(TB_RELAX_TOLERANCE);
+    if (!(moving[0] | moving[1] | moving[2] | moving[3])) break;
   }
-  p2->normal_impulse = x2;
-  tb_f4 d2 = x2 - a2;
-  apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
-  if (c->bouncy) {
-    count_normal(&c->q[1], &arms2, d2);
-    c->q[1].max_normal_impulse = max4(c->q[1].max_normal_impulse, x2);
-  }
-  /* the normal speed each point's change made (its own K_ii; the coupling
-   * term is left out), for the relax passes' stop */
-  tb_f4 normal_change = max4(max4(d1, -d1) * c->k11, max4(d2, -d2) * c->k22);
   if (!use_bias) *change = max4(*change, normal_change);
-  tb_f4 f1 = solve_friction(c, p1, &arms1, &A, &B);
-  tb_f4 f2 = solve_friction(c, p2, &arms2, &A, &B);
-  if (record) {
-    /* the relax passes' record (relax_activity.h): the points' speed changes,
-     * friction's taken at the normal K (the same order as the tangent one) */
-    tb_f4 moved = max4(normal_change, max4(max4(f1, -f1) * c->k11, max4(f2, -f2) * c->k22));
-    note_lanes(ctx, c, moved > splat(TB_RELAX_TOLERANCE));
-  }
-  if (c->rolling) {
-    tb_f4 limit = c->rolling_resistance * (x1 + x2);
-    tb_f4 impulse = -c->rolling_mass * (B.w - A.w);
-    tb_f4 total = min4(max4(c->rolling_impulse + impulse, -limit), limit);
-    impulse = total - c->rolling_impulse;
-    c->rolling_impulse = total;
-    A.w -= c->ja * impulse;
-    B.w += c->jb * impulse;
-  }
+  if (record) note_lanes(ctx, c, moved > splat(TB_RELAX_TOLERANCE));
   scatter(states, c->a, &A);
   scatter(states, c->b, &B);
 }
@@ -1561,13 +1595,15 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
 
 size_t tb_contact_solver_bytes(const tb_world* w) {
   return (size_t)w->constraint_capacity * sizeof(tb_contact_constraint) +
-         (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->wide_capacity * sizeof(tb_wide_contact) +
-         (size_t)w->deep_capacity * sizeof(tb_deep_block) + (size_t)w->push_capacity * sizeof *w->push_velocities;
+         (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->degree_capacity +
+         (size_t)w->wide_capacity * sizeof(tb_wide_contact) + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
+         (size_t)w->push_capacity * sizeof *w->push_velocities;
 }
 
 void tb_contact_solver_free(tb_world* w) {
   tb_mem_free(w->constraints, (size_t)w->constraint_capacity * sizeof(tb_contact_constraint));
   tb_mem_free(w->color_lanes, (size_t)w->color_capacity * sizeof *w->color_lanes);
+  tb_mem_free(w->contact_degree, (size_t)w->degree_capacity);
   tb_mem_free(w->wide, (size_t)w->wide_capacity * sizeof(tb_wide_contact));
   tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_block));
   tb_mem_free(w->push_velocities, (size_t)w->push_capacity * sizeof *w->push_velocities);

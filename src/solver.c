@@ -406,6 +406,7 @@ int tb_solve(tb_world* w, float dt, int substeps) {
       change = relax_pass(w, &ctx, sub, pass);
     tb_joint_tree_store(w);
   }
+  w->profile.relax_pass_count = ctx.relax_pass;
   tb_contact_solver_finish(w, &ctx);
   tb_wide_joints_store(w, &ctx);
   for (int k = 0; k < w->scalar_joint_count; ++k) tb_joint_store(w, w->step_joints[k], &ctx);

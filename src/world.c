@@ -327,6 +327,7 @@ tb_result tb_world_step(tb_world_id id, float time_step, int substeps) {
   double t1 = stage_clock(w);
   tb_contacts_update(w); /* manifolds at the start of the step; events; wake-ups */
   double t2 = stage_clock(w);
+  p->relax_pass_count = 0; /* (tb_solve counts them) */
   int bad = tb_solve(w, time_step, substeps);
   p->awake_body_count = w->awake_count; /* before sleep removes any */
   p->awake_contact_count = w->step_contact_count;

@@ -74,6 +74,8 @@ typedef struct tb_world {
   int constraint_capacity;
   int* color_lanes; /* per colour: contacts, then the next lane (contact_solver.c) */
   int color_capacity;
+  uint8_t* contact_degree; /* per solver body: 0, 1 or 2 for more contacts or a joint (contact_solver.c) */
+  int degree_capacity;
   void* wide; /* coloured blocks of four contacts */
   int wide_capacity, wide_count;
   int wide_fixed_from; /* the first block of contacts with a body that does not move (contact_solver.c) */
