@@ -1507,6 +1507,36 @@ static tb_world_id lanes_scene(bool four_lanes) {
   return w;
 }
 
+/* A body in flight moves as predicted: where its shape leaves its fat box, the
+ * new one reaches the whole predicted motion ahead (v dt, capped at the
+ * shape's margin), so a ball at 3 m/s (5 cm a step, margin 3.75 cm) is
+ * re-inserted every other step rather than every one. A body touching
+ * something moves with its neighbours, not as predicted: a quarter of v dt
+ * (world.c). One step without gravity: a ball in the air at 3 m/s, and a box
+ * sliding on frictionless ground at 4 m/s. */
+START_TEST(fat_boxes_reach_the_whole_way_in_flight) {
+  tb_world_id w = make_world((tb_vec2){0.0f, 0.0f}, false);
+  ground_box(w, 40.0f, 0.0f);
+  tb_shape_def sd = material(1.0f, 0.0f, 0.0f);
+  tb_body_id ball = circle_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 10.0f}, 0.3f, &sd);
+  tb_body_id box = box_body(w, TB_DYNAMIC_BODY, (tb_vec2){0.0f, 0.5f}, 0.0f, 0.3f, 0.5f, &sd);
+  tb_body_set_linear_velocity(ball, (tb_vec2){3.0f, 0.0f});
+  tb_body_set_linear_velocity(box, (tb_vec2){4.0f, 0.0f}); /* beyond its margin (5 cm) in a step */
+  ck_assert_int_eq(tb_world_step(w, DT, SUBSTEPS), TB_OK);
+  tb_world* world = tb_world_get(w, "test");
+  const tb_body* bodies[2] = {tb_body_at(world, ball.index1 - 1), tb_body_at(world, box.index1 - 1)};
+  for (int k = 0; k < 2; ++k) {
+    const tb_shape* s = tb_shape_at(world, bodies[k]->shape_list);
+    float speed = k == 0 ? tb_body_get_linear_velocity(ball).x : tb_body_get_linear_velocity(box).x;
+    float stretch = (k == 0 ? 1.0f : 0.25f) * speed * DT;
+    stretch = stretch < s->margin ? stretch : s->margin;
+    ck_assert_near(s->fat_aabb.upper.x - s->aabb.upper.x, s->margin + stretch, 1e-5);
+    ck_assert_near(s->aabb.lower.x - s->fat_aabb.lower.x, s->margin, 1e-5);
+  }
+  tb_destroy_world(w);
+}
+END_TEST
+
 START_TEST(eight_lanes_give_the_bits_of_four) {
   if (!tb_contact_solver_eight_lanes()) fprintf(stderr, "eight lanes: no AVX2 here, both worlds run four lanes\n");
   tb_world_id four = lanes_scene(true), eight = lanes_scene(false);
@@ -1542,6 +1572,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, newtons_cradle);
   tcase_add_test(tc, determinism);
   tcase_add_test(tc, eight_lanes_give_the_bits_of_four);
+  tcase_add_test(tc, fat_boxes_reach_the_whole_way_in_flight);
   tcase_add_test(tc, conveyor_belt);
   tcase_add_test(tc, rolling_resistance);
   tcase_add_test(tc, bad_world_def_solver_fields);
