@@ -94,12 +94,13 @@ typedef enum toi_kind {
   TOI_OVERLAPPED /* closer than the target at t = 0 */
 } toi_kind;
 
-/* Time of impact of the swept proxy against a fixed one, searched in [0, t_max). */
+/* Time of impact of the swept proxy against a fixed one, searched in [0, t_max);
+ * *start_distance: their cores' distance at t = 0 (0 where they overlap). */
 static toi_kind impact(const tb_shape_proxy* fixed, const tb_sweep* fixed_sweep, const tb_shape_proxy* moving,
-                       const tb_sweep* moving_sweep, float t_max, float* t) {
+                       const tb_sweep* moving_sweep, float t_max, float* t, float* start_distance) {
   tb_toi_input in = {*fixed, *moving, *fixed_sweep, *moving_sweep, t_max, TB_TOI_TARGET, TB_TOI_TOLERANCE};
   tb_toi_output out;
-  if (tb_time_of_impact(&in, &out) != TB_OK) return TOI_NONE;
+  tb_time_of_impact_unchecked(&in, &out, start_distance);
   switch (out.state) {
     case TB_TOI_SEPARATED: return TOI_NONE;
     case TB_TOI_OVERLAPPED: return TOI_OVERLAPPED;
@@ -142,6 +143,27 @@ static bool core_driven_in(const sweep_context* sc, const tb_shape_proxy* other,
   return tb_dot(moved, out.normal) < -core->radius; /* normal: from the obstacle to the core */
 }
 
+/* Whether a touching shape's core cannot come within the target gap of the
+ * obstacle during the sweep, so that sweeping it would find nothing. The
+ * shape holds the disc of radius extent about its centroid (extent is its
+ * thinnest half-width); if it overlaps the obstacle (convex) by depth p, the
+ * least move that parts them leaves that disc outside, so the centroid is at
+ * least extent - p from the obstacle now, and the core's surface extent - p
+ * - CORE_FRACTION extent. With the cores apart, p is the radii less their
+ * distance (0 if positive); with the cores overlapping it is unknown (no
+ * answer). Over the sweep the core moves no further than its centroid. One
+ * tolerance more than the search's is kept, against rounding. */
+static bool core_out_of_reach(const sweep_context* sc, float radii, float core_distance) {
+  if (!(core_distance > 0.0f)) return false;
+  float depth = tb_maxf(radii - core_distance, 0.0f);
+  float core_gap = (1.0f - CORE_FRACTION) * sc->extent - depth;
+  /* how far the centroid can move: |dc| + |r| |da|, r its arm from the centre of mass */
+  const tb_sweep* sw = &sc->sweep;
+  float travel = tb_length(tb_sub(sw->c2, sw->c1)) +
+                 tb_length(tb_sub(sc->centroid_local, sw->local_center)) * fabsf(sw->a2 - sw->a1);
+  return core_gap - travel > TB_TOI_TARGET + 2.0f * TB_TOI_TOLERANCE;
+}
+
 static bool candidate(int32_t proxy, int32_t other_index, void* context) {
   (void)proxy;
   sweep_context* sc = context;
@@ -166,8 +188,8 @@ static bool candidate(int32_t proxy, int32_t other_index, void* context) {
     return true;
 
   tb_shape_proxy other = tb_shape_geom_proxy(o);
-  float t = sc->t;
-  toi_kind k = impact(&other, &fixed, &sc->proxy, &sc->sweep, sc->t, &t);
+  float t = sc->t, start_distance;
+  toi_kind k = impact(&other, &fixed, &sc->proxy, &sc->sweep, sc->t, &t, &start_distance);
   if ((k == TOI_AT_START || k == TOI_OVERLAPPED) && sc->extent > 0.0f) {
     /* Already touching: the contact owns the pair and the body is not held
      * back (holding it would stop it sliding along the surface). Only its
@@ -176,8 +198,10 @@ static bool candidate(int32_t proxy, int32_t other_index, void* context) {
      * at the target gap instead of passing through. A core already at the
      * target gap at t = 0 is left alone too: holding it there can keep the
      * body, and the velocity the solver gave it, in place for good. */
+    if (core_out_of_reach(sc, sc->proxy.radius + other.radius, start_distance))
+      return true; /* (a ball rolling on the ground: its core stays far above it) */
     tb_shape_proxy core = tb_make_proxy(&sc->centroid_local, 1, CORE_FRACTION * sc->extent);
-    k = impact(&other, &fixed, &core, &sc->sweep, sc->t, &t);
+    k = impact(&other, &fixed, &core, &sc->sweep, sc->t, &t, &start_distance);
     /* not a jointed body: held at its start while its partners moved on, it
      * opened its joints by the whole step and their correction threw it (a
      * ragdoll at 1/30 s with one substep reached 580 m/s) */

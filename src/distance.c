@@ -662,6 +662,19 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
   if (!(tol > 0.0f) || !tb_length_ok(tol))
     return tb_fail(NULL, TB_ERR_INVALID_ARGUMENT, "tb_time_of_impact: tolerance must be > 0 and finite");
 
+  float start_distance;
+  tb_time_of_impact_unchecked(input, output, &start_distance);
+  return TB_OK;
+}
+
+void tb_time_of_impact_unchecked(const tb_toi_input* input, tb_toi_output* output, float* start_distance) {
+  const tb_shape_proxy* a = &input->proxy_a;
+  const tb_shape_proxy* b = &input->proxy_b;
+  const float radius = a->radius + b->radius;
+  const float target = input->target, tol = input->tolerance;
+  output->state = TB_TOI_FAILED;
+  output->fraction = 0.0f;
+  output->iterations = 0;
   const tb_sweep* sa = &input->sweep_a;
   const tb_sweep* sb = &input->sweep_b;
   const tb_vec2 dv = tb_sub(tb_sub(sa->c2, sa->c1), tb_sub(sb->c2, sb->c1));
@@ -677,6 +690,7 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
     tb_transform xfa = tb_sweep_transform(sa, t), xfb = tb_sweep_transform(sb, t);
     points_in_frame_of(xfa, xfb, b, pb);
     core_distance c = gjk(a->points, a->count, pb, b->count, &cache);
+    if (iter == 1) *start_distance = c.distance;
     float gap = c.distance - radius;
     if (gap < target + tol) {
       if (gap >= target - tol) {
@@ -690,7 +704,7 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
         output->state = TB_TOI_FAILED;
         output->fraction = t_safe;
       }
-      return TB_OK;
+      return;
     }
     tb_vec2 n = tb_rotate(xfa.q, c.normal);
     float mu = tb_dot(dv, n) + spin;
@@ -701,12 +715,11 @@ tb_result tb_time_of_impact(const tb_toi_input* input, tb_toi_output* output) {
     if (iter == TOI_MAX_ITERATIONS) {
       output->state = TB_TOI_FAILED;
       output->fraction = t;
-      return TB_OK;
+      return;
     }
   }
   output->state = TB_TOI_SEPARATED;
   output->fraction = t_max;
-  return TB_OK;
 }
 
 /* ------------------------------------------------------------- ray casts -- */

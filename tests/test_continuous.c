@@ -202,6 +202,31 @@ START_TEST(touching_at_start_is_left_to_the_solver) {
 }
 END_TEST
 
+/* A touching shape's core sweep is skipped where the core cannot come within
+ * the target (core_out_of_reach: a ball rolling on the ground). At its edge:
+ * a ball of radius 0.1 (core 0.025) overlapping a wall by 5 mm, driven d into
+ * it, ends where the core's sweep puts it, whether the sweep was run or
+ * skipped: at x0 + d until its core reaches the target gap (d = 0.065), then
+ * held there. The skip covers d below 0.0625 (the core's gap of 0.070 less
+ * the target and twice the tolerance); a bound that left out the overlap
+ * (0.0675), or took the ball's radius for the core's, would let it on. */
+START_TEST(core_sweep_skipped_only_out_of_reach) {
+  tb_world_id id = tbt_world(0.0f, 0.0f);
+  static_box(id, (tb_vec2){0.025f, 0.0f}, 0.025f, 5.0f); /* left face at x = 0 */
+  const float x0 = -0.095f, stop = -0.025f - TB_TOI_TARGET;
+  tb_body_id ball = circle_body(id, (tb_vec2){x0, 0.0f}, 0.1f, (tb_vec2){60.0f, 0.0f}, false);
+  for (int k = 0; k <= 100; ++k) {
+    float d = 0.001f * (float)k;
+    moved(ball, (tb_vec2){x0, 0.0f}, 0.0f, (tb_vec2){x0 + d, 0.0f}, 0.0f, true);
+    tb_solve_continuous(internal(id));
+    double expected = x0 + d < stop ? (double)(x0 + d) : (double)stop;
+    ck_assert_msg(fabs(center_of(ball).x - expected) <= TB_TOI_TOLERANCE + ROUNDING, "d = %g: x = %.6f, expected %.6f",
+                  (double)d, (double)center_of(ball).x, expected);
+  }
+  tb_destroy_world(id);
+}
+END_TEST
+
 /* A core that starts at the target gap (where the last step's pass stopped
  * it) and is driven on into the wall stays where it started (issue 23: it was
  * left alone, and a small box knocked twice into a wall's corner by a faster
@@ -813,6 +838,7 @@ static Suite* continuous_suite(void) {
   tcase_add_test(pass, slow_body_is_not_swept);
   tcase_add_test(pass, touching_at_start_is_left_to_the_solver);
   tcase_add_test(pass, core_at_the_target_gap_is_held_when_driven_in);
+  tcase_add_test(pass, core_sweep_skipped_only_out_of_reach);
   tcase_add_test(pass, chain_segments_are_one_sided);
   tcase_add_test(pass, filters_decide_as_for_contacts);
   tcase_add_test(pass, bullets_see_moving_bodies);
