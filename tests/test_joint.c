@@ -863,19 +863,26 @@ END_TEST
  * of 0.3 per step closes the error geometrically (0.7^n): after 3 s (180
  * steps) it is below a micrometre but for the force limits; 1e-3 is generous.
  * Then the offsets move and it follows. */
+/* A world without gravity where a motor joint on a static body at the origin
+ * drives a 1 kg box (at the origin too) with the given definition (its
+ * bodies set here). */
+static tb_joint_id motor_box(tb_world_id w, tb_motor_joint_def jd, tb_body_id* box) {
+  jd.body_a = static_body(w, (tb_vec2){0.0f, 0.0f});
+  jd.body_b = *box = tbt_box_body(w, 0.0f, 0.0f, 0.5f, 0.5f);
+  tb_joint_id j = tb_create_motor_joint(w, &jd);
+  ck_assert(!tb_joint_id_is_null(j));
+  return j;
+}
+
 START_TEST(motor_joint_reaches_offset) {
   tb_world_id w = tbt_world(0.0f, 0.0f);
-  tb_body_id ground = static_body(w, (tb_vec2){0.0f, 0.0f});
-  tb_body_id box = tbt_box_body(w, 0.0f, 0.0f, 0.5f, 0.5f);
   tb_motor_joint_def jd = tb_default_motor_joint_def();
-  jd.body_a = ground;
-  jd.body_b = box;
   jd.linear_offset = (tb_vec2){1.0f, 2.0f};
   jd.angular_offset = 0.5f;
   jd.max_force = 50.0f;
   jd.max_torque = 50.0f;
-  tb_joint_id j = tb_create_motor_joint(w, &jd);
-  ck_assert(!tb_joint_id_is_null(j));
+  tb_body_id box;
+  tb_joint_id j = motor_box(w, jd, &box);
   step(w, 180);
   tb_vec2 p = tb_body_get_position(box);
   report("motor joint: at (%.6f, %.6f) angle %.6f", (double)p.x, (double)p.y, (double)tb_body_get_angle(box));
@@ -905,20 +912,17 @@ START_TEST(motor_joint_corrects_its_factor_per_step) {
   for (int i = 0; i < 4; ++i)
     for (int k = 0; k < 4; ++k) {
       tb_world_id w = tbt_world(0.0f, 0.0f);
-      tb_body_id ground = static_body(w, (tb_vec2){0.0f, 0.0f});
-      tb_body_id box = tbt_box_body(w, 0.0f, 0.0f, 0.5f, 0.5f);
       tb_motor_joint_def jd = tb_default_motor_joint_def();
-      jd.body_a = ground;
-      jd.body_b = box;
       jd.linear_offset = (tb_vec2){1.0f, 0.0f};
       jd.max_force = 1e6f;
       jd.max_torque = 1e6f;
       jd.correction_factor = factors[i];
-      ck_assert(!tb_joint_id_is_null(tb_create_motor_joint(w, &jd)));
+      tb_body_id box;
+      motor_box(w, jd, &box);
       ck_assert_int_eq(tb_world_step(w, DT, substeps[k]), TB_OK);
       double moved = tb_body_get_position(box).x;
-      ck_assert_msg(fabs(moved - factors[i]) <= 1e-5 * factors[i], "c = %g, %d substeps: moved %.9g", (double)factors[i],
-                    substeps[k], moved);
+      ck_assert_msg(fabs(moved - factors[i]) <= 1e-5 * factors[i], "c = %g, %d substeps: moved %.9g",
+                    (double)factors[i], substeps[k], moved);
       tb_destroy_world(w);
     }
 }
