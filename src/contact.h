@@ -23,8 +23,8 @@ typedef struct tb_contact_edge {
 typedef struct tb_contact {
   int shape_a, shape_b; /* ordered so that a collide function takes (A, B) */
   tb_contact_edge edges[2];
-  tb_manifold manifold; /* points carry the impulses kept for warm starting */
-  tb_patch patch;       /* where the touching features end (the solver stops a point that slid off) */
+  tb_manifold manifold;    /* points carry the impulses kept for warm starting */
+  tb_patch patch;          /* where the touching features end (the solver stops a point that slid off) */
   tb_manifold_cache cache; /* the manifold as last collided, for reuse (manifold_reuse.h) */
   float friction, restitution;
   float rolling_resistance; /* coefficient times radius (m) */

@@ -15,9 +15,9 @@ struct tb_body;
 /* The manifold as collided, in A's frame (about A's centre of mass), and where
  * B was in that frame then. */
 typedef struct tb_manifold_cache {
-  tb_vec2 normal;      /* A's frame */
-  tb_vec2 points[2];   /* midway points, A's frame, from A's centre of mass */
-  float separation[2]; /* as collided */
+  tb_vec2 normal;          /* A's frame */
+  tb_vec2 points[2];       /* midway points, A's frame, from A's centre of mass */
+  float separation[2];     /* as collided */
   tb_vec2 relative_center; /* B's centre of mass in A's frame */
   tb_rot relative_rot;     /* B's rotation in A's frame */
   int point_count;         /* 0: nothing kept (not touching, or never collided) */

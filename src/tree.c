@@ -84,7 +84,8 @@ static bool reserve_nodes(tb_tree* t, int32_t extra) {
   if (cap > INT32_MAX) return false;
   /* the rebuild's work space first, so that it always covers the nodes */
   if (t->scratch_capacity < cap) {
-    int32_t* scratch = tb_mem_grow(t->scratch, (size_t)t->scratch_capacity * sizeof *scratch, (size_t)cap * sizeof *scratch);
+    int32_t* scratch =
+        tb_mem_grow(t->scratch, (size_t)t->scratch_capacity * sizeof *scratch, (size_t)cap * sizeof *scratch);
     if (scratch == NULL) return false;
     t->scratch = scratch;
     t->scratch_capacity = (int32_t)cap;

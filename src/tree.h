@@ -58,12 +58,12 @@ typedef struct tb_tree {
   int32_t free_list;
   int32_t root;
   int32_t proxy_count;
-  float margin; /* fat AABB = tight AABB grown by this on every side (m) */
-  int32_t* scratch;         /* rebuild work space, one entry per node slot (never allocated by a rebuild) */
-  int32_t scratch_capacity; /* >= capacity */
+  float margin;              /* fat AABB = tight AABB grown by this on every side (m) */
+  int32_t* scratch;          /* rebuild work space, one entry per node slot (never allocated by a rebuild) */
+  int32_t scratch_capacity;  /* >= capacity */
   tb_tree_build_unit* units; /* the rebuild's units: at most the leaves, half the node slots plus one */
   int32_t unit_capacity;     /* >= capacity / 2 + 1 */
-  bool enlarged;            /* some internal node is marked enlarged */
+  bool enlarged;             /* some internal node is marked enlarged */
 } tb_tree;
 
 /* Called per proxy whose fat AABB overlaps the query box; return false to stop.

@@ -441,7 +441,8 @@ static bool chain_with_wheel_sleeps(float spin) {
     any_awake |= tb_body_is_awake(box[i]);
     asleep += !tb_body_is_awake(box[i]);
   }
-  if (spin != 0.0f) ck_assert_msg(asleep == 0 && tb_body_is_awake(wheel), "%d of 30 boxes asleep beside a spinning wheel", asleep);
+  if (spin != 0.0f)
+    ck_assert_msg(asleep == 0 && tb_body_is_awake(wheel), "%d of 30 boxes asleep beside a spinning wheel", asleep);
   tb_destroy_world(w);
   return !any_awake;
 }

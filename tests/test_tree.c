@@ -324,7 +324,7 @@ START_TEST(enlarged_moves_and_partial_rebuild) {
     tb_tree_rebuild_enlarged(&tree);
     ck_assert(!tree.enlarged);
     ck_assert_int_eq(marked_nodes(&tree), 0);
-    ck_assert_int_eq(tree.node_count, nodes); /* the freed internal nodes are taken back */
+    ck_assert_int_eq(tree.node_count, nodes);                   /* the freed internal nodes are taken back */
     check_against_brute_force(&tree, &m, 40 + (unsigned)round); /* exact again */
   }
   /* a box still inside its fat box marks nothing */
