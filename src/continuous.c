@@ -79,7 +79,8 @@ typedef struct sweep_context {
   const tb_shape* s;
   tb_shape_proxy proxy;
   tb_sweep sweep;
-  tb_aabb box; /* holds the shape over the whole sweep */
+  tb_aabb box;        /* holds the shape over the whole sweep */
+  tb_transform start; /* the body's pose at t = 0 */
   tb_vec2 centroid_local;
   tb_vec2 centroid1, centroid2; /* world, at t = 0 and t = 1 */
   float extent;                 /* the shape's thinnest half-width */
@@ -143,6 +144,32 @@ static bool core_driven_in(const sweep_context* sc, const tb_shape_proxy* other,
   return tb_dot(moved, out.normal) < -core->radius; /* normal: from the obstacle to the core */
 }
 
+/* How far two convex polygon cores overlap: the length of the least
+ * translation that parts them, 0 when apart. In the plane that translation is
+ * along a face normal of one of them (separating axis theorem): along face i
+ * of P (normal n, vertex v) the other reaches min_w n . (w - v) beyond it,
+ * and the overlap is minus the largest of those over both polygons' faces. */
+static float polygon_overlap(const tb_polygon* a, tb_transform xa, const tb_polygon* b, tb_transform xb) {
+  tb_vec2 wa[TB_MAX_POLYGON_VERTICES], wb[TB_MAX_POLYGON_VERTICES];
+  for (int i = 0; i < a->count; ++i) wa[i] = tb_transform_point(xa, a->vertices[i]);
+  for (int i = 0; i < b->count; ++i) wb[i] = tb_transform_point(xb, b->vertices[i]);
+  float most = -FLT_MAX;
+  for (int side = 0; side < 2; ++side) {
+    const tb_polygon* p = side == 0 ? a : b;
+    tb_rot q = side == 0 ? xa.q : xb.q;
+    const tb_vec2* pv = side == 0 ? wa : wb;
+    const tb_vec2* ov = side == 0 ? wb : wa;
+    int other_count = side == 0 ? b->count : a->count;
+    for (int i = 0; i < p->count; ++i) {
+      tb_vec2 n = tb_rotate(q, p->normals[i]);
+      float reach = FLT_MAX;
+      for (int j = 0; j < other_count; ++j) reach = tb_minf(reach, tb_dot(n, tb_sub(ov[j], pv[i])));
+      most = tb_maxf(most, reach);
+    }
+  }
+  return tb_maxf(-most, 0.0f);
+}
+
 /* Whether a touching shape's core cannot come within the target gap of the
  * obstacle during the sweep, so that sweeping it would find nothing. The
  * shape holds the disc of radius extent about its centroid (extent is its
@@ -150,12 +177,19 @@ static bool core_driven_in(const sweep_context* sc, const tb_shape_proxy* other,
  * least move that parts them leaves that disc outside, so the centroid is at
  * least extent - p from the obstacle now, and the core's surface extent - p
  * - CORE_FRACTION extent. With the cores apart, p is the radii less their
- * distance (0 if positive); with the cores overlapping it is unknown (no
- * answer). Over the sweep the core moves no further than its centroid. One
+ * distance (0 if positive); with the cores overlapping it is their overlap
+ * plus the radii, which polygon_overlap finds for two polygons (a box
+ * sliding on a box; for other shapes no answer). Over the sweep the core moves no further than its centroid. One
  * tolerance more than the search's is kept, against rounding. */
-static bool core_out_of_reach(const sweep_context* sc, float radii, float core_distance) {
-  if (!(core_distance > 0.0f)) return false;
-  float depth = tb_maxf(radii - core_distance, 0.0f);
+static bool core_out_of_reach(const sweep_context* sc, const tb_shape* other, tb_transform other_xf, float radii,
+                              float core_distance) {
+  float depth;
+  if (core_distance > 0.0f)
+    depth = tb_maxf(radii - core_distance, 0.0f);
+  else if (sc->s->type == TB_SHAPE_POLYGON && other->type == TB_SHAPE_POLYGON)
+    depth = polygon_overlap(&sc->s->geom.polygon, sc->start, &other->geom.polygon, other_xf) + radii;
+  else
+    return false;
   float core_gap = (1.0f - CORE_FRACTION) * sc->extent - depth;
   /* how far the centroid can move: |dc| + |r| |da|, r its arm from the centre of mass */
   const tb_sweep* sw = &sc->sweep;
@@ -198,7 +232,7 @@ static bool candidate(int32_t proxy, int32_t other_index, void* context) {
      * at the target gap instead of passing through. A core already at the
      * target gap at t = 0 is left alone too: holding it there can keep the
      * body, and the velocity the solver gave it, in place for good. */
-    if (core_out_of_reach(sc, sc->proxy.radius + other.radius, start_distance))
+    if (core_out_of_reach(sc, o, xf, sc->proxy.radius + other.radius, start_distance))
       return true; /* (a ball rolling on the ground: its core stays far above it) */
     tb_shape_proxy core = tb_make_proxy(&sc->centroid_local, 1, CORE_FRACTION * sc->extent);
     k = impact(&other, &fixed, &core, &sc->sweep, sc->t, &t, &start_distance);
@@ -222,6 +256,7 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
   sweep_context sc = {.w = w, .body = body_index, .bullet = bullet, .t = 1.0f};
   sc.sweep = (tb_sweep){b->local_center, b->center0, b->center, b->angle0, b->angle};
   tb_transform xf1 = tb_sweep_transform(&sc.sweep, 0.0f), xf2 = tb_sweep_transform(&sc.sweep, 1.0f);
+  sc.start = xf1;
   float turn = fabsf(b->angle - b->angle0);
   float growth = tb_minf(tb_minf(0.5f * turn, 0.125f * turn * turn), 2.0f);
   for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {

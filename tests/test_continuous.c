@@ -209,21 +209,32 @@ END_TEST
  * skipped: at x0 + d until its core reaches the target gap (d = 0.065), then
  * held there. The skip covers d below 0.0625 (the core's gap of 0.070 less
  * the target and twice the tolerance); a bound that left out the overlap
- * (0.0675), or took the ball's radius for the core's, would let it on. */
+ * (0.0675), or took the ball's radius for the core's, would let it on. The
+ * same for a sharp box of half-width 0.1, whose core overlaps the wall's (its
+ * overlap from polygon_overlap). */
 START_TEST(core_sweep_skipped_only_out_of_reach) {
-  tb_world_id id = tbt_world(0.0f, 0.0f);
-  static_box(id, (tb_vec2){0.025f, 0.0f}, 0.025f, 5.0f); /* left face at x = 0 */
-  const float x0 = -0.095f, stop = -0.025f - TB_TOI_TARGET;
-  tb_body_id ball = circle_body(id, (tb_vec2){x0, 0.0f}, 0.1f, (tb_vec2){60.0f, 0.0f}, false);
-  for (int k = 0; k <= 100; ++k) {
-    float d = 0.001f * (float)k;
-    moved(ball, (tb_vec2){x0, 0.0f}, 0.0f, (tb_vec2){x0 + d, 0.0f}, 0.0f, true);
-    tb_solve_continuous(internal(id));
-    double expected = x0 + d < stop ? (double)(x0 + d) : (double)stop;
-    ck_assert_msg(fabs(center_of(ball).x - expected) <= TB_TOI_TOLERANCE + ROUNDING, "d = %g: x = %.6f, expected %.6f",
-                  (double)d, (double)center_of(ball).x, expected);
+  for (int shape = 0; shape < 2; ++shape) {
+    tb_world_id id = tbt_world(0.0f, 0.0f);
+    static_box(id, (tb_vec2){0.025f, 0.0f}, 0.025f, 5.0f); /* left face at x = 0 */
+    const float x0 = -0.095f, stop = -0.025f - TB_TOI_TARGET;
+    tb_body_id body;
+    if (shape == 0) {
+      body = circle_body(id, (tb_vec2){x0, 0.0f}, 0.1f, (tb_vec2){60.0f, 0.0f}, false);
+    } else {
+      body = make_body(id, TB_DYNAMIC_BODY, (tb_vec2){x0, 0.0f}, 0.0f, (tb_vec2){60.0f, 0.0f}, false);
+      add_box(body, 0.1f, 0.1f, NULL);
+    }
+    for (int k = 0; k <= 100; ++k) {
+      float d = 0.001f * (float)k;
+      moved(body, (tb_vec2){x0, 0.0f}, 0.0f, (tb_vec2){x0 + d, 0.0f}, 0.0f, true);
+      tb_solve_continuous(internal(id));
+      double expected = x0 + d < stop ? (double)(x0 + d) : (double)stop;
+      ck_assert_msg(fabs(center_of(body).x - expected) <= TB_TOI_TOLERANCE + ROUNDING,
+                    "%s, d = %g: x = %.6f, expected %.6f", shape == 0 ? "ball" : "box", (double)d,
+                    (double)center_of(body).x, expected);
+    }
+    tb_destroy_world(id);
   }
-  tb_destroy_world(id);
 }
 END_TEST
 
