@@ -222,4 +222,6 @@ format-check:
 clean:
 	rm -rf build
 
--include $(shell find build -name '*.d' 2>/dev/null)
+# header dependencies of every build tree, also one outside build/ (BUILD=...):
+# without them a changed header left that tree's objects stale
+-include $(sort $(shell find build $(BUILD) -name '*.d' 2>/dev/null))
