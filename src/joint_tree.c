@@ -87,7 +87,7 @@ typedef struct tb_jt_node {
   int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
   double y[3];                /* right-hand side, then the solution */
   double d[3][3];             /* D, then D^-1 */
-  float hp[3][3];             /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
+  double dh[3][3];            /* D^-1 H_{i,parent}: dof x the parent's dof (the substitutions' only H) */
   double stiff;               /* body: the geometric stiffness added to its inertia */
   int sa, sb;                 /* joint: the solver bodies of A and B (the passes read them without the joint) */
   /* joint: the rows' accumulated impulses (*rows.impulse[r]), kept here while
@@ -97,9 +97,10 @@ typedef struct tb_jt_node {
   float acc[3];
   double kc[3][3]; /* joint: K_c, the row block's own effective-mass inverse (G = g K_c) */
   tb_rigid_rows rows;
-  int first; /* body: its first edge in tree->edges */
-  int count; /* body: its edge count */
-  int a, b;  /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
+  float hp[3][3]; /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
+  int first;      /* body: its first edge in tree->edges */
+  int count;      /* body: its edge count */
+  int a, b;       /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
 } tb_jt_node;
 
 /* A node's place in the graph, as the build finds it (before the nodes are
@@ -375,6 +376,10 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
 
 /* ---- small dense blocks (at most 3 x 3) ----------------------------------- */
 
+/* The small loops run at most 3 times: unrolled whole, their sums of
+ * different rows interleave (the order within each sum is kept). */
+#define UNROLLED _Pragma("GCC unroll 3")
+
 /* In place inverse of the leading n x n block; zero when singular (the rows
  * then make no correction). n is a constant where it is inlined (invert). */
 static inline __attribute__((always_inline)) void invert_n(int n, double m[3][3]) {
@@ -414,8 +419,10 @@ static void invert(double m[3][3], int n) {
 /* A row block's Jacobian on one of its bodies, as a k x 3 block with the sign
  * of H: +ja on body A, -jb on body B (see the file comment). */
 static void joint_block(const tb_jt_node* joint, bool side_a, float out[3][3]) {
-  for (int r = 0; r < joint->dof; ++r)
-    for (int c = 0; c < 3; ++c) out[r][c] = side_a ? joint->rows.ja[r][c] : -joint->rows.jb[r][c];
+  if (side_a)
+    memcpy(out, joint->rows.ja, sizeof joint->rows.ja);
+  else
+    UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) out[r][c] = -joint->rows.jb[r][c];
 }
 
 /* The inverse mass of a solver body times a 3-vector (x, y, angle). */
@@ -445,35 +452,32 @@ static void inv_mass_times(const tb_solver_body* s, const float j[3], double out
     }                                                              \
   } while (0)
 
-/* The kernels' loops run at most 3 times: unrolled whole, their sums of
- * different rows interleave (the order within each sum is kept). */
-#define UNROLLED _Pragma("GCC unroll 3")
-
-/* D_p -= H_ip^T D_i^-1 H_ip (D_i already inverted) */
-static inline __attribute__((always_inline)) void eliminate(int nd, int pd, const tb_jt_node* n, tb_jt_node* p) {
-  double dh[3][3] = {{0.0}}; /* D_i^-1 H_ip */
+/* D_p -= H_ip^T D_i^-1 H_ip (D_i already inverted), keeping D_i^-1 H_ip for
+ * the substitutions */
+static inline __attribute__((always_inline)) void eliminate(int nd, int pd, tb_jt_node* n, tb_jt_node* p) {
+  double dh[3][3] = {{0.0}};
   UNROLLED for (int r = 0; r < nd; ++r) UNROLLED for (int c = 0; c < pd; ++c) UNROLLED for (int s = 0; s < nd; ++s)
       dh[r][c] += n->d[r][s] * n->hp[s][c];
   UNROLLED for (int c = 0; c < pd; ++c) UNROLLED for (int e = 0; e < pd; ++e) UNROLLED for (int r = 0; r < nd; ++r)
       p->d[c][e] -= n->hp[r][c] * dh[r][e];
+  memcpy(n->dh, dh, sizeof dh);
 }
 
-/* forward: y_p -= H_ip^T D_i^-1 y_i */
+/* forward: y_p -= H_ip^T D_i^-1 y_i, as (D_i^-1 H_ip)^T y_i (D_i is symmetric) */
 static inline __attribute__((always_inline)) void forward(int nd, int pd, const tb_jt_node* n, tb_jt_node* p) {
-  double dy[3] = {0.0};
-  UNROLLED for (int r = 0; r < nd; ++r) UNROLLED for (int s = 0; s < nd; ++s) dy[r] += n->d[r][s] * n->y[s];
-  UNROLLED for (int c = 0; c < pd; ++c) UNROLLED for (int r = 0; r < nd; ++r) p->y[c] -= n->hp[r][c] * dy[r];
+  UNROLLED for (int c = 0; c < pd; ++c) UNROLLED for (int r = 0; r < nd; ++r) p->y[c] -= n->dh[r][c] * n->y[r];
 }
 
-/* back: y_i = D_i^-1 (y_i - H_ip x_p) */
+/* back: y_i = D_i^-1 (y_i - H_ip x_p), as D_i^-1 y_i - (D_i^-1 H_ip) x_p: one
+ * product with D_i^-1 per node and substitution, not one each way */
 static inline __attribute__((always_inline)) void back(int nd, int pd, tb_jt_node* n, const tb_jt_node* p) {
   double rhs[3] = {n->y[0], n->y[1], n->y[2]};
-  if (p != NULL) {
-    UNROLLED for (int r = 0; r < nd; ++r) UNROLLED for (int c = 0; c < pd; ++c) rhs[r] -= n->hp[r][c] * p->y[c];
-  }
   UNROLLED for (int r = 0; r < nd; ++r) {
     n->y[r] = 0.0;
     UNROLLED for (int s = 0; s < nd; ++s) n->y[r] += n->d[r][s] * rhs[s];
+  }
+  if (p != NULL) {
+    UNROLLED for (int r = 0; r < nd; ++r) UNROLLED for (int c = 0; c < pd; ++c) n->y[r] -= n->dh[r][c] * p->y[c];
   }
 }
 
@@ -516,8 +520,9 @@ static void joint_rows(tb_world* w, const tb_step_context* ctx, tb_jt_node* n) {
 
 /* H of a body toward its parent joint: the transpose of the joint's block. */
 static void body_block(tb_jt_node* n, const tb_jt_node* joint, bool side_a) {
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < joint->dof; ++c) n->hp[r][c] = side_a ? joint->rows.ja[c][r] : -joint->rows.jb[c][r];
+  float sign = side_a ? 1.0f : -1.0f;
+  const float(*j)[3] = side_a ? joint->rows.ja : joint->rows.jb;
+  UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) n->hp[r][c] = sign * j[c][r];
 }
 
 /* h k of a joint's point rows on the side of body A or B (the file comment):
@@ -607,42 +612,41 @@ static void factor(tb_joint_tree* t, const tb_step_context* ctx, int from, int t
     tb_jt_node* n = &t->nodes[q];
     if (n->body) body_mass(t, ctx, n, q, use_bias);
     for (int c = n->children_end - 1; c >= n->children; --c) {
-      const tb_jt_node* child = &t->nodes[c];
+      tb_jt_node* child = &t->nodes[c];
       BY_SHAPE(child->dof, n->dof, eliminate, child, n);
     }
     invert(n->d, n->dof);
   }
 }
 
-/* The right-hand side of a joint node's k rows (k a constant where inlined). */
-static inline __attribute__((always_inline)) void joint_rhs(int k, const tb_joint_tree* t, const tb_step_context* ctx,
-                                                            tb_jt_node* n, double bias) {
+/* The right-hand side of a joint node's k rows (k and biased constants where
+ * inlined): Cdot + b C + G l_acc, with G l_acc = g (K_c l_acc); a relax pass
+ * (biased false) has no correction term. */
+static inline __attribute__((always_inline)) void joint_rhs(int k, bool biased, const tb_joint_tree* t,
+                                                            const tb_step_context* ctx, tb_jt_node* n, double bias) {
   const tb_solver_body* a = &ctx->states[n->sa];
   const tb_solver_body* b = &ctx->states[n->sb];
+  double avx = a->v.x, avy = a->v.y, aw = a->w, bvx = b->v.x, bvy = b->v.y, bw = b->w;
+  double acc[3];
+  UNROLLED for (int s = 0; s < k; ++s) acc[s] = n->acc[s];
   UNROLLED for (int r = 0; r < k; ++r) {
     const float* ja = n->rows.ja[r];
     const float* jb = n->rows.jb[r];
-    double cdot = (double)jb[0] * b->v.x + (double)jb[1] * b->v.y + (double)jb[2] * b->w -
-                  ((double)ja[0] * a->v.x + (double)ja[1] * a->v.y + (double)ja[2] * a->w);
-    double compliant = 0.0;
-    UNROLLED for (int s = 0; s < k; ++s) compliant += t->compliance * n->kc[r][s] * (double)n->acc[s];
-    double correction = bias * (double)n->rows.c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
-    correction = correction > most ? most : correction < -most ? -most : correction;
-    n->y[r] = cdot + correction + compliant;
+    double cdot = (double)jb[0] * bvx + (double)jb[1] * bvy + (double)jb[2] * bw -
+                  ((double)ja[0] * avx + (double)ja[1] * avy + (double)ja[2] * aw);
+    double held = 0.0; /* (K_c l_acc)_r */
+    UNROLLED for (int s = 0; s < k; ++s) held += n->kc[r][s] * acc[s];
+    if (biased) {
+      double correction = bias * (double)n->rows.c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
+      cdot += correction > most ? most : correction < -most ? -most : correction;
+    }
+    n->y[r] = cdot + t->compliance * held;
   }
 }
 
-/* The right-hand side of one node at the current velocities and impulses. */
-static void node_rhs(const tb_joint_tree* t, const tb_step_context* ctx, int i, double bias) {
+/* The right-hand side of a body node: zero, but for the geometric stiffness. */
+static inline __attribute__((always_inline)) void body_rhs(const tb_joint_tree* t, const tb_step_context* ctx, int i) {
   tb_jt_node* n = &t->nodes[i];
-  if (!n->body) {
-    switch (n->dof) {
-      case 1: joint_rhs(1, t, ctx, n, bias); break;
-      case 2: joint_rhs(2, t, ctx, n, bias); break;
-      default: joint_rhs(3, t, ctx, n, bias); break;
-    }
-    return;
-  }
   n->y[0] = n->y[1] = n->y[2] = 0.0;
   if (n->stiff == 0.0) return;
   /* the warm start turned the body by I^-1 tau with the plain inertia */
@@ -656,6 +660,29 @@ static void node_rhs(const tb_joint_tree* t, const tb_step_context* ctx, int i, 
   n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
 }
 
+/* The right-hand side of one node at the current velocities and impulses
+ * (biased a constant where inlined; bias is 0 in a relax pass). */
+static inline __attribute__((always_inline)) void node_rhs_kind(bool biased, const tb_joint_tree* t,
+                                                                const tb_step_context* ctx, int i, double bias) {
+  tb_jt_node* n = &t->nodes[i];
+  if (n->body) {
+    body_rhs(t, ctx, i);
+    return;
+  }
+  switch (n->dof) {
+    case 1: joint_rhs(1, biased, t, ctx, n, bias); break;
+    case 2: joint_rhs(2, biased, t, ctx, n, bias); break;
+    default: joint_rhs(3, biased, t, ctx, n, bias); break;
+  }
+}
+
+static void node_rhs(const tb_joint_tree* t, const tb_step_context* ctx, int i, double bias) {
+  if (bias != 0.0)
+    node_rhs_kind(true, t, ctx, i, bias);
+  else
+    node_rhs_kind(false, t, ctx, i, bias);
+}
+
 /* Whether a later relax pass solves the tree of nodes [from, to): when one
  * of its bodies still moves (relax_activity.h). */
 static bool tree_active(const tb_step_context* ctx, const tb_joint_tree* t, int from, int to) {
@@ -665,14 +692,16 @@ static bool tree_active(const tb_step_context* ctx, const tb_joint_tree* t, int 
 }
 
 /* One tree, nodes [from, to): the two substitutions through the
- * factorisation, and the velocity changes and impulses. */
-static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool use_bias) {
+ * factorisation, and the velocity changes and impulses (use_bias a constant
+ * where inlined, substitute). */
+static inline __attribute__((always_inline)) void substitute_kind(tb_world* w, tb_step_context* ctx, int from, int to,
+                                                                  bool use_bias) {
   tb_joint_tree* t = &w->joint_tree;
   double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
   /* forward, children first: y_i = b_i - sum_c H_ci^T D_c^-1 y_c */
   for (int q = to - 1; q >= from; --q) {
     tb_jt_node* n = &t->nodes[q];
-    node_rhs(t, ctx, q, bias);
+    node_rhs_kind(use_bias, t, ctx, q, bias);
     for (int c = n->children_end - 1; c >= n->children; --c) {
       const tb_jt_node* child = &t->nodes[c];
       BY_SHAPE(child->dof, n->dof, forward, child, n);
@@ -698,6 +727,13 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
     s->w += (float)n->y[2];
     if (!use_bias) tb_relax_note(ctx, n->ref, tb_relax_speed(ctx, n->ref, dv, (float)n->y[2]));
   }
+}
+
+static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool use_bias) {
+  if (use_bias)
+    substitute_kind(w, ctx, from, to, true);
+  else
+    substitute_kind(w, ctx, from, to, false);
 }
 
 /* A tree of one joint (its bodies have no other tree joint), solved without
