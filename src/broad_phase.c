@@ -246,6 +246,7 @@ void tb_broad_phase_rebuild(tb_world* w) {
 typedef struct pair_query {
   tb_world* w;
   int shape;
+  const tb_shape* s; /* the shape's record */
 } pair_query;
 
 /* Whether two shapes may have a contact, before any contact exists. */
@@ -275,7 +276,13 @@ static bool pair_callback(int32_t proxy, int32_t other, void* context) {
   /* both moved and in the same tree: the pair is found from both sides; take
    * it once, from the higher index, so the order of creation is fixed */
   const tb_shape* o = tb_shape_at(w, other);
-  if (o->in_move_buffer && o->tree == tb_shape_at(w, q->shape)->tree && other > q->shape) return true;
+  const tb_shape* s = q->s;
+  if (o->in_move_buffer && o->tree == s->tree && other > q->shape) return true;
+  /* Shapes of one body, or of one negative group (a ragdoll's limbs), never
+   * pair (should_pair): asked first, they need no look-up in the pair set,
+   * which misses the cache (rain's ragdolls found their own limbs in most of
+   * their queries, every step). */
+  if (o->body == s->body || (o->filter.group_index < 0 && o->filter.group_index == s->filter.group_index)) return true;
   if (tb_pair_find(&w->broad_phase, q->shape, other) >= 0) return true;
   if (!should_pair(w, q->shape, other)) return true;
   (void)tb_contact_create(w, q->shape, other); /* out of memory: retried when it moves again */
@@ -289,7 +296,7 @@ void tb_broad_phase_update_pairs(tb_world* w) {
     if (shape_index < 0) continue;
     const tb_shape* s = tb_shape_at(w, shape_index);
     tb_aabb fat = s->fat_aabb;
-    pair_query q = {w, shape_index};
+    pair_query q = {w, shape_index, s};
     /* A dynamic proxy looks everywhere; others only among dynamic proxies.
      * Only proxies whose category the shape's mask takes can pair with it
      * (tb_filters_collide), and the trees skip the subtrees with none (a
