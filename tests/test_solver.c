@@ -232,6 +232,43 @@ START_TEST(box_sticks_below_friction_angle) {
 }
 END_TEST
 
+/* The same box at rest, by its forces: a sticking contact whose bodies touch
+ * nothing else is solved directly (its two normal rows and its tangent row
+ * together; see solve_isolated_direct in src/contact_solver.c), so its
+ * impulses must be those of static equilibrium. In the last substep the
+ * points carry, along the normal and along the slope,
+ *   N1 + N2 = m g cos(theta) h,   |T1 + T2| = m g sin(theta) h,
+ * and about the centre friction's moment at the base (half height b) is held
+ * by the corners' (half width a): |N1 - N2| a = |T1 + T2| b, here a = b.
+ * Bound: the relax rounds stop once no point's speed changes by more than
+ * 1e-5 m/s, which leaves an impulse within 1e-5 N s per point (an effective
+ * mass below 1 kg) of the solution: 2e-5 N s on sums of 0.04 N s. The box's
+ * own motion on its contact springs at rest is far below that (it sticks to
+ * a micrometre over 10 s, above). */
+START_TEST(box_on_slope_holds_by_its_closed_form_forces) {
+  const double theta = 20.0 * PI / 180.0, h = DT / SUBSTEPS, m = 1.0;
+  tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, false);
+  incline in = make_incline(w, theta, 0.6f);
+  tb_shape_def sd = material(1.0f, 0.6f, 0.0f);
+  tb_body_id box = box_body(w, TB_DYNAMIC_BODY, on_incline(&in, 0.0, 0.5), (float)-theta, 0.5f, 0.5f, &sd);
+  ck_assert_double_eq_tol(tb_body_get_mass(box), m, 1e-6);
+  step(w, 60);
+  tb_contact_data cd;
+  ck_assert_int_eq(tb_body_get_contact_data(box, &cd, 1), 1);
+  ck_assert_int_eq(cd.manifold.point_count, 2);
+  const tb_manifold_point* p = cd.manifold.points;
+  double normal = (double)p[0].normal_impulse + p[1].normal_impulse;
+  double tangent = fabs((double)p[0].tangent_impulse + p[1].tangent_impulse);
+  double corners = fabs((double)p[0].normal_impulse - p[1].normal_impulse);
+  fprintf(stderr, "box held on a slope: normal %.6e (closed form %.6e), friction %.6e (%.6e), corners %.6e N s\n",
+          normal, m * G * cos(theta) * h, tangent, m * G * sin(theta) * h, corners);
+  ck_assert_double_eq_tol(normal, m * G * cos(theta) * h, 2e-5);
+  ck_assert_double_eq_tol(tangent, m * G * sin(theta) * h, 2e-5);
+  ck_assert_double_eq_tol(corners, tangent, 2e-5);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* ----------------------------------------------------------------- restitution -- */
 
 typedef struct bounce_result {
@@ -1563,6 +1600,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, disc_rolls_down_incline);
   tcase_add_test(tc, box_slides_down_incline);
   tcase_add_test(tc, box_sticks_below_friction_angle);
+  tcase_add_test(tc, box_on_slope_holds_by_its_closed_form_forces);
   tcase_add_test(tc, bounce_apex);
   tcase_add_test(tc, slow_body_far_from_origin_moves);
   tcase_add_test(tc, head_on_collisions);
