@@ -428,14 +428,15 @@ static int color_constraints(tb_world* w, const tb_step_context* ctx, int* fixed
   return colors;
 }
 
-/* Whether a lane has a point deeper than its push depth (less half
- * TB_DEEP_OVERLAP) at the step start. */
-static bool lane_is_deep(const tb_wide_contact* c, int lane) {
-  bool deep = false;
+/* The lanes of a block with a point deeper than its push depth (less half
+ * TB_DEEP_OVERLAP) at the step start, all four at once (a lane at a time,
+ * this look over every block was 1% of a small pyramid's step). */
+static tb_i4 deep_lanes(const tb_wide_contact* c) {
+  tb_i4 deep = {0, 0, 0, 0};
   for (int p = 0; p < 2; ++p) {
     const tb_wide_point* wp = &c->p[p];
     deep |=
-        c->q[p].base_separation[lane] + wp->push_depth[lane] < 0.5f * TB_DEEP_OVERLAP && wp->normal_mass[lane] > 0.0f;
+        (c->q[p].base_separation + wp->push_depth < splat(0.5f * TB_DEEP_OVERLAP)) & (wp->normal_mass > splat(0.0f));
   }
   return deep;
 }
@@ -488,23 +489,27 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
   int32_t* pushed = w->scratch; /* per solver body: 1 when a deep contact moves it */
   memset(pushed, 0, (size_t)bodies * sizeof *pushed);
   bool any = false;
-  for (int b = 0; b < w->wide_count; ++b)
+  for (int b = 0; b < w->wide_count; ++b) {
+    tb_i4 deep = deep_lanes(&wide[b]);
+    if (!(deep[0] | deep[1] | deep[2] | deep[3])) continue;
     for (int lane = 0; lane < 4; ++lane) {
-      if (!lane_is_deep(&wide[b], lane)) continue;
+      if (!deep[lane]) continue;
       any = true;
       if (wide[b].ma[lane] > 0.0f) pushed[wide[b].a[lane]] = 1;
       if (wide[b].mb[lane] > 0.0f) pushed[wide[b].b[lane]] = 1;
     }
+  }
   if (!any) return true;
-  for (int b = 0; b < w->wide_count; ++b)
+  for (int b = 0; b < w->wide_count; ++b) {
+    const tb_wide_contact* c = &wide[b];
+    tb_i4 deep = deep_lanes(c);
     for (int lane = 0; lane < 4; ++lane) {
-      const tb_wide_contact* c = &wide[b];
       bool live = c->p[0].normal_mass[lane] > 0.0f || c->p[1].normal_mass[lane] > 0.0f;
       /* the static dummy and kinematic bodies are never marked pushed */
-      if (b < w->wide_fixed_from ? !lane_is_deep(c, lane) : !(live && (pushed[c->a[lane]] || pushed[c->b[lane]])))
-        continue;
+      if (b < w->wide_fixed_from ? !deep[lane] : !(live && (pushed[c->a[lane]] || pushed[c->b[lane]]))) continue;
       if (!add_deep(w, ctx, b, lane)) return false;
     }
+  }
   if (!tb_array_reserve((void**)&w->push_velocities, &w->push_capacity, 4 * bodies, sizeof(float))) return false;
   ctx->push_velocities = w->push_velocities;
   return true;
