@@ -227,7 +227,8 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   const tb_contact* c[4];
   const tb_body *ba[4], *bb[4];
   for (int lane = 0; lane < 4; ++lane) {
-    c[lane] = k[lane] >= 0 ? (const tb_contact*)tb_pool_at(&w->contacts, w->step_contacts[k[lane]]) : &no_contact;
+    wc->contact[lane] = k[lane] >= 0 ? w->step_contacts[k[lane]] : -1;
+    c[lane] = k[lane] >= 0 ? (const tb_contact*)tb_pool_at(&w->contacts, wc->contact[lane]) : &no_contact;
     ba[lane] = k[lane] >= 0 ? tb_body_at(w, c[lane]->edges[0].body) : &no_body;
     bb[lane] = k[lane] >= 0 ? tb_body_at(w, c[lane]->edges[1].body) : &no_body;
     wc->a[lane] = k[lane] >= 0 ? solver_index(ctx, ba[lane]) : ctx->static_index;
@@ -257,7 +258,8 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wc->jb = jb;
   tb_f4 mass_share = mb * inverse_or_zero(ma + mb); /* beta by the inverse masses (see arms_now) */
   tb_i4 both_move = (ma > zero) & (mb > zero);
-  wc->shift_limit = min4(LANES(ba, max_extent), LANES(bb, max_extent));
+  tb_f4 extent_a = LANES(ba, max_extent), extent_b = LANES(bb, max_extent);
+  wc->shift_limit = min4(extent_a, extent_b);
   wc->slide_min = LANES(c, patch.slide_min);
   wc->slide_max = LANES(c, patch.slide_max);
   wc->core_radius = LANES(c, patch.radius);
@@ -265,15 +267,12 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   /* A patch end within reach of this step (how far the bodies can slide:
    * |dv|_1 >= |dv| bounds their relative speed without a square root) may lie
    * where the face runs on into another shape (see ask_ends). */
-  tb_f4 speed = (fabs4(B.vx - A.vx) + fabs4(B.vy - A.vy)) +
-                (fabs4(A.w) * LANES(ba, max_extent) + fabs4(B.w) * LANES(bb, max_extent));
+  tb_f4 speed = (fabs4(B.vx - A.vx) + fabs4(B.vy - A.vy)) + (fabs4(A.w) * extent_a + fabs4(B.w) * extent_b);
   tb_f4 reach = speed * splat(ctx->dt) + splat(tb_units.linear_slop);
   tb_i4 near_min = wc->slide_min > -reach, near_max = wc->slide_max < reach;
-  wc->ends_near = 0;
-  for (int lane = 0; lane < 4; ++lane)
-    wc->ends_near |= (near_min[lane] ? 1 << (2 * lane) : 0) | (near_max[lane] ? 2 << (2 * lane) : 0);
+  tb_i4 end_bits = (near_min & (tb_i4){1, 4, 16, 64}) | (near_max & (tb_i4){2, 8, 32, 128});
+  wc->ends_near = (end_bits[0] | end_bits[1]) | (end_bits[2] | end_bits[3]);
   wc->ends_asked = 0;
-  for (int lane = 0; lane < 4; ++lane) wc->contact[lane] = k[lane] >= 0 ? w->step_contacts[k[lane]] : -1;
   tb_f4 cax = LANES(ba, center.x), cay = LANES(ba, center.y), cbx = LANES(bb, center.x), cby = LANES(bb, center.y);
   const tb_i4 dynamic = {TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY, TB_DYNAMIC_BODY};
   tb_i4 rigid_other = (INT_LANES(ba, type) != dynamic) | (INT_LANES(bb, type) != dynamic);
@@ -524,7 +523,8 @@ static bool collect_deep_contacts(tb_world* w, tb_step_context* ctx) {
 static int32_t lanes_isolated(const uint8_t* degree, const tb_wide_contact* c) {
   int32_t isolated = 1;
   for (int lane = 0; lane < 4; ++lane)
-    isolated &= (c->ma[lane] == 0.0f || degree[c->a[lane]] == 1) & (c->mb[lane] == 0.0f || degree[c->b[lane]] == 1);
+    isolated &=
+        ((c->ma[lane] == 0.0f) | (degree[c->a[lane]] == 1)) & ((c->mb[lane] == 0.0f) | (degree[c->b[lane]] == 1));
   return isolated;
 }
 
