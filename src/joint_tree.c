@@ -681,13 +681,6 @@ static inline __attribute__((always_inline)) void node_rhs_kind(bool biased, con
   }
 }
 
-static void node_rhs(const tb_joint_tree* t, const tb_step_context* ctx, int i, double bias) {
-  if (bias != 0.0)
-    node_rhs_kind(true, t, ctx, i, bias);
-  else
-    node_rhs_kind(false, t, ctx, i, bias);
-}
-
 /* Whether a later relax pass solves the tree of nodes [from, to): when one
  * of its bodies still moves (relax_activity.h). */
 static bool tree_active(const tb_step_context* ctx, const tb_joint_tree* t, int from, int to) {
@@ -768,10 +761,8 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
  * steps: a door on a hinge, a pendulum, a wheel on its axle. false, and
  * nothing done, when a body needs the geometric stiffness (the general
  * factorisation has it). */
-static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, int to, bool use_bias) {
-  int joint = from;
-  while (t->nodes[joint].body) ++joint;
-  tb_jt_node* n = &t->nodes[joint];
+static inline __attribute__((always_inline)) bool solve_lone_kind(int k, tb_joint_tree* t, tb_step_context* ctx,
+                                                                  int from, int to, tb_jt_node* n, bool use_bias) {
   tb_solver_body* a = &ctx->states[n->sa];
   tb_solver_body* b = &ctx->states[n->sb];
   if (use_bias) {
@@ -782,15 +773,18 @@ static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, i
       return false;
     }
   }
-  int k = n->dof;
   double s[3][3] = {{0.0}};
-  for (int r = 0; r < k; ++r)
-    for (int c = 0; c < k; ++c) s[r][c] = n->kc[r][c] + t->compliance * n->kc[r][c];
-  invert(s, k);
-  node_rhs(t, ctx, joint, use_bias ? (double)t->softness.bias_rate : 0.0);
+  UNROLLED for (int r = 0; r < k; ++r) UNROLLED for (int c = 0; c < k; ++c) s[r][c] =
+      n->kc[r][c] + t->compliance * n->kc[r][c];
+  invert_n(k, s);
+  double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
+  if (bias != 0.0) /* (a zero bias rate: the relax kind) */
+    joint_rhs(k, true, t, ctx, n, bias);
+  else
+    joint_rhs(k, false, t, ctx, n, bias);
   double dl[3] = {0.0, 0.0, 0.0};
-  for (int r = 0; r < k; ++r) {
-    for (int c = 0; c < k; ++c) dl[r] -= s[r][c] * n->y[c];
+  UNROLLED for (int r = 0; r < k; ++r) {
+    UNROLLED for (int c = 0; c < k; ++c) dl[r] -= s[r][c] * n->y[c];
     n->acc[r] += (float)dl[r];
   }
   /* M^-1 J^T dl: -ja on A, +jb on B */
@@ -798,10 +792,10 @@ static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, i
     if ((side == 0 ? n->a : n->b) < 0) continue; /* static or kinematic: not a node */
     tb_solver_body* body = side == 0 ? a : b;
     double p[3] = {0.0, 0.0, 0.0};
-    for (int r = 0; r < k; ++r) {
+    UNROLLED for (int r = 0; r < k; ++r) {
       const float* j = side == 0 ? n->rows.ja[r] : n->rows.jb[r];
       double l = side == 0 ? -dl[r] : dl[r];
-      for (int c = 0; c < 3; ++c) p[c] += (double)j[c] * l;
+      UNROLLED for (int c = 0; c < 3; ++c) p[c] += (double)j[c] * l;
     }
     tb_vec2 dv = {(float)((double)body->inv_mass * p[0]), (float)((double)body->inv_mass * p[1])};
     float dw = (float)((double)body->inv_inertia * p[2]);
@@ -811,6 +805,17 @@ static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, i
     if (!use_bias) tb_relax_note(ctx, index, tb_relax_speed(ctx, index, dv, dw));
   }
   return true;
+}
+
+static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, int to, bool use_bias) {
+  int joint = from;
+  while (t->nodes[joint].body) ++joint;
+  tb_jt_node* n = &t->nodes[joint];
+  switch (n->dof) { /* the row count as a constant: the small loops unrolled, the same operations */
+    case 1: return solve_lone_kind(1, t, ctx, from, to, n, use_bias);
+    case 2: return solve_lone_kind(2, t, ctx, from, to, n, use_bias);
+    default: return solve_lone_kind(3, t, ctx, from, to, n, use_bias);
+  }
 }
 
 void tb_joint_tree_solve(tb_world* w, tb_step_context* ctx, bool use_bias) {
