@@ -549,6 +549,13 @@ static void pair_blocks(tb_wide_contact* wide, const int* end_lane, int colors) 
 
 bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
   int count = w->step_contact_count;
+  if (count == 0) { /* a pendulum, bodies in flight: what the path below leaves, without its walks */
+    if (!tb_array_reserve((void**)&w->contact_degree, &w->degree_capacity, ctx->static_index + 1, 1)) return false;
+    memset(w->contact_degree, 0, (size_t)ctx->static_index + 1);
+    w->wide_count = w->wide_fixed_from = w->deep_count = 0;
+    ctx->push_velocities = NULL;
+    return true;
+  }
   if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
       !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 4 * count, sizeof(int)) ||
       !tb_array_reserve((void**)&w->contact_degree, &w->degree_capacity, ctx->static_index + 1, 1))
