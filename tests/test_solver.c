@@ -269,6 +269,35 @@ START_TEST(box_on_slope_holds_by_its_closed_form_forces) {
 }
 END_TEST
 
+/* The same box sliding down a 30 degree slope with mu = 0.3 < tan 30: the
+ * contact carries the normal load, and friction at its limit at each point,
+ *   N1 + N2 = m g cos(theta) h,   |T_i| = mu N_i,
+ * and the corners' moment as above. Bound as above. */
+START_TEST(box_sliding_down_a_slope_carries_its_closed_form_forces) {
+  const double theta = 30.0 * PI / 180.0, h = DT / SUBSTEPS, m = 1.0, mu = 0.3;
+  tb_world_id w = make_world((tb_vec2){0.0f, (float)-G}, false);
+  incline in = make_incline(w, theta, (float)mu);
+  tb_shape_def sd = material(1.0f, (float)mu, 0.0f);
+  tb_body_id box = box_body(w, TB_DYNAMIC_BODY, on_incline(&in, -10.0, 0.5), (float)-theta, 0.5f, 0.5f, &sd);
+  step(w, 30);
+  ck_assert(dot(tb_body_get_linear_velocity(box), in.d) > 1.0); /* sliding: 1.64 m/s after 0.5 s */
+  tb_contact_data cd;
+  ck_assert_int_eq(tb_body_get_contact_data(box, &cd, 1), 1);
+  ck_assert_int_eq(cd.manifold.point_count, 2);
+  const tb_manifold_point* p = cd.manifold.points;
+  double normal = (double)p[0].normal_impulse + p[1].normal_impulse;
+  double tangent = fabs((double)p[0].tangent_impulse + p[1].tangent_impulse);
+  double corners = fabs((double)p[0].normal_impulse - p[1].normal_impulse);
+  fprintf(stderr, "box sliding down a slope: normal %.6e (closed form %.6e), friction %.6e (%.6e), corners %.6e N s\n",
+          normal, m * G * cos(theta) * h, tangent, mu * m * G * cos(theta) * h, corners);
+  ck_assert_double_eq_tol(normal, m * G * cos(theta) * h, 2e-5);
+  for (int i = 0; i < 2; ++i)
+    ck_assert_double_eq_tol(fabs((double)p[i].tangent_impulse), mu * (double)p[i].normal_impulse, 1e-6);
+  ck_assert_double_eq_tol(corners, tangent, 2e-5);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* ----------------------------------------------------------------- restitution -- */
 
 typedef struct bounce_result {
@@ -1601,6 +1630,7 @@ static Suite* solver_suite(void) {
   tcase_add_test(tc, box_slides_down_incline);
   tcase_add_test(tc, box_sticks_below_friction_angle);
   tcase_add_test(tc, box_on_slope_holds_by_its_closed_form_forces);
+  tcase_add_test(tc, box_sliding_down_a_slope_carries_its_closed_form_forces);
   tcase_add_test(tc, bounce_apex);
   tcase_add_test(tc, slow_body_far_from_origin_moves);
   tcase_add_test(tc, head_on_collisions);
