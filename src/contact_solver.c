@@ -862,11 +862,12 @@ static inline __attribute__((always_inline)) void note_lanes(tb_step_context* ct
 }
 
 /* An isolated block's relax solve in one go, where it has one: a box
- * resting on the ground, held on a slope or sliding down one. Gauss-Seidel over its rows
- * converges slowly there, because each normal impulse turns the box and so
- * moves the friction rows' velocity and back (the box on a 20 degree slope:
- * 5 rounds a substep to 1e-5 m/s). With both points pushing and friction
- * sticking, the solution is the linear solve of the contact's rows together,
+ * resting on the ground, held on a slope or sliding down one. Gauss-Seidel
+ * over its rows converges slowly there, because each normal impulse turns
+ * the box and so moves the friction rows' velocity and back (the box on a 20
+ * degree slope: 5 rounds a substep to 1e-5 m/s). With both points pushing
+ * and friction sticking, the solution is the linear solve of the contact's
+ * rows together,
  *   K x = -r,  K = J M^-1 J^T,  r = J v + (s / h where a point is still apart),
  * with J the two normal rows and one tangent row: the two points' tangent
  * rows are one row (their levers r x t = -(r . n) are the face's lever at
@@ -946,7 +947,8 @@ static inline __attribute__((always_inline)) bool solve_isolated_direct(tb_wide_
   if (!(ok[0] | ok[1] | ok[2] | ok[3])) return false;
   n1 = blend(slide, m1, n1);
   n2 = blend(slide, m2, n2);
-  tb_f4 t1 = blend(slide, f * m1, total * n1 / load), t2 = blend(slide, f * m2, total - total * n1 / load);
+  tb_f4 t1 = blend(slide, f * m1, total * n1 / load);
+  tb_f4 t2 = blend(single, zero, blend(slide, f * m2, total - t1)); /* (a lone point's partner is inert) */
   tb_f4 dn1 = blend(ok, n1 - a1, zero), dn2 = blend(ok, n2 - a2, zero);
   tb_f4 dt1 = blend(ok, t1 - b1, zero), dt2 = blend(ok, t2 - b2, zero);
   p1->normal_impulse = blend(ok, n1, a1);
