@@ -232,6 +232,24 @@ START_TEST(box_sticks_below_friction_angle) {
 }
 END_TEST
 
+/* A box's one two-point contact after the last step: its points' impulses
+ * summed along the normal and the tangent, and the corners' difference. */
+typedef struct face_loads {
+  tb_manifold_point p[2];
+  double normal, tangent, corners;
+} face_loads;
+
+static face_loads face_loads_of(tb_body_id box) {
+  tb_contact_data cd;
+  ck_assert_int_eq(tb_body_get_contact_data(box, &cd, 1), 1);
+  ck_assert_int_eq(cd.manifold.point_count, 2);
+  face_loads f = {{cd.manifold.points[0], cd.manifold.points[1]}, 0.0, 0.0, 0.0};
+  f.normal = (double)f.p[0].normal_impulse + f.p[1].normal_impulse;
+  f.tangent = fabs((double)f.p[0].tangent_impulse + f.p[1].tangent_impulse);
+  f.corners = fabs((double)f.p[0].normal_impulse - f.p[1].normal_impulse);
+  return f;
+}
+
 /* The same box at rest, by its forces: a sticking contact whose bodies touch
  * nothing else is solved directly (its two normal rows and its tangent row
  * together; see solve_isolated_direct in src/contact_solver.c), so its
@@ -253,13 +271,8 @@ START_TEST(box_on_slope_holds_by_its_closed_form_forces) {
   tb_body_id box = box_body(w, TB_DYNAMIC_BODY, on_incline(&in, 0.0, 0.5), (float)-theta, 0.5f, 0.5f, &sd);
   ck_assert_double_eq_tol(tb_body_get_mass(box), m, 1e-6);
   step(w, 60);
-  tb_contact_data cd;
-  ck_assert_int_eq(tb_body_get_contact_data(box, &cd, 1), 1);
-  ck_assert_int_eq(cd.manifold.point_count, 2);
-  const tb_manifold_point* p = cd.manifold.points;
-  double normal = (double)p[0].normal_impulse + p[1].normal_impulse;
-  double tangent = fabs((double)p[0].tangent_impulse + p[1].tangent_impulse);
-  double corners = fabs((double)p[0].normal_impulse - p[1].normal_impulse);
+  face_loads f = face_loads_of(box);
+  double normal = f.normal, tangent = f.tangent, corners = f.corners;
   fprintf(stderr, "box held on a slope: normal %.6e (closed form %.6e), friction %.6e (%.6e), corners %.6e N s\n",
           normal, m * G * cos(theta) * h, tangent, m * G * sin(theta) * h, corners);
   ck_assert_double_eq_tol(normal, m * G * cos(theta) * h, 2e-5);
@@ -281,13 +294,9 @@ START_TEST(box_sliding_down_a_slope_carries_its_closed_form_forces) {
   tb_body_id box = box_body(w, TB_DYNAMIC_BODY, on_incline(&in, -10.0, 0.5), (float)-theta, 0.5f, 0.5f, &sd);
   step(w, 30);
   ck_assert(dot(tb_body_get_linear_velocity(box), in.d) > 1.0); /* sliding: 1.64 m/s after 0.5 s */
-  tb_contact_data cd;
-  ck_assert_int_eq(tb_body_get_contact_data(box, &cd, 1), 1);
-  ck_assert_int_eq(cd.manifold.point_count, 2);
-  const tb_manifold_point* p = cd.manifold.points;
-  double normal = (double)p[0].normal_impulse + p[1].normal_impulse;
-  double tangent = fabs((double)p[0].tangent_impulse + p[1].tangent_impulse);
-  double corners = fabs((double)p[0].normal_impulse - p[1].normal_impulse);
+  face_loads f = face_loads_of(box);
+  const tb_manifold_point* p = f.p;
+  double normal = f.normal, tangent = f.tangent, corners = f.corners;
   fprintf(stderr, "box sliding down a slope: normal %.6e (closed form %.6e), friction %.6e (%.6e), corners %.6e N s\n",
           normal, m * G * cos(theta) * h, tangent, mu * m * G * cos(theta) * h, corners);
   ck_assert_double_eq_tol(normal, m * G * cos(theta) * h, 2e-5);
