@@ -35,6 +35,7 @@ static bool awake_push(tb_world* w, int body) {
   b->awake_index = w->awake_count;
   b->sleep_time = 0.0f;
   w->awake[w->awake_count++] = body;
+  w->walked_joints_valid = false; /* (collect_joints walks the awake bodies) */
   return true;
 }
 
@@ -46,6 +47,7 @@ static void awake_remove(tb_world* w, int body) {
   w->awake[hole] = last;
   tb_body_at(w, last)->awake_index = hole;
   b->awake_index = -1;
+  w->walked_joints_valid = false;
 }
 
 static void wake_island(tb_world* w, int island) {

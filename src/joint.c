@@ -768,6 +768,7 @@ static void link_edge(tb_world* w, int joint, int side) {
   if (b->joint_list >= 0) tb_joint_at(w, b->joint_list >> 1)->edges[b->joint_list & 1].prev = key;
   b->joint_list = key;
   b->joint_count += 1;
+  w->walked_joints_valid = false; /* (collect_joints walks the joint lists) */
 }
 
 static void unlink_edge(tb_world* w, int joint, int side) {
@@ -780,6 +781,7 @@ static void unlink_edge(tb_world* w, int joint, int side) {
     b->joint_list = e->next;
   if (e->next >= 0) tb_joint_at(w, e->next >> 1)->edges[e->next & 1].prev = e->prev;
   b->joint_count -= 1;
+  w->walked_joints_valid = false;
 }
 
 bool tb_joints_allow_collision(const tb_world* w, int body_a, int body_b) {

@@ -133,8 +133,20 @@ static void integrate_positions(tb_world* w, tb_step_context* ctx, tb_body_motio
 
 /* ---- the step ------------------------------------------------------------------ */
 
-/* Joints of the awake bodies, each once (from its lower awake index). */
+/* Joints of the awake bodies, each once (from its lower awake index). The
+ * walk waits on every joint record and on each joint's other body, which lie
+ * all over memory (9% of a joint grid's step); what it finds depends only on
+ * the awake set and the bodies' joint lists, so it is kept (walked_joints)
+ * until one of them changes (island.c, joint.c). */
 static bool collect_joints(tb_world* w) {
+  if (w->walked_joints_valid) {
+    if (!tb_array_reserve((void**)&w->step_joints, &w->step_joint_capacity, w->walked_joint_count, sizeof(int)))
+      return false;
+    if (w->walked_joint_count > 0)
+      memcpy(w->step_joints, w->walked_joints, (size_t)w->walked_joint_count * sizeof *w->step_joints);
+    w->step_joint_count = w->walked_joint_count;
+    return true;
+  }
   w->step_joint_count = 0;
   for (int i = 0; i < w->awake_count; ++i) {
     for (int key = tb_body_at(w, w->awake[i])->joint_list; key >= 0;) {
@@ -149,6 +161,12 @@ static bool collect_joints(tb_world* w) {
       key = next;
     }
   }
+  if (tb_array_reserve((void**)&w->walked_joints, &w->walked_joint_capacity, w->step_joint_count, sizeof(int))) {
+    if (w->step_joint_count > 0)
+      memcpy(w->walked_joints, w->step_joints, (size_t)w->step_joint_count * sizeof *w->step_joints);
+    w->walked_joint_count = w->step_joint_count;
+    w->walked_joints_valid = true;
+  } /* (out of memory: walked again next step) */
   return true;
 }
 

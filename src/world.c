@@ -275,6 +275,7 @@ tb_result tb_destroy_world(tb_world_id id) {
   tb_mem_free(w->new_contact_bodies, (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies);
   tb_mem_free(w->step_contacts, (size_t)w->step_contact_capacity * sizeof *w->step_contacts);
   tb_mem_free(w->step_joints, (size_t)w->step_joint_capacity * sizeof *w->step_joints);
+  tb_mem_free(w->walked_joints, (size_t)w->walked_joint_capacity * sizeof *w->walked_joints);
   tb_mem_free(w->step_joint_info, (size_t)w->step_joint_info_capacity * sizeof *w->step_joint_info);
   tb_joint_tree_free(&w->joint_tree);
   tb_wide_joints_free(&w->wide_joints);
@@ -981,6 +982,7 @@ static void memory_stats(const tb_world* w, tb_memory_stats* m) {
               tb_wide_joints_bytes(&w->wide_joints) + (size_t)w->new_contact_capacity * sizeof *w->new_contact_bodies +
               (size_t)w->step_contact_capacity * sizeof *w->step_contacts +
               (size_t)w->step_joint_capacity * sizeof *w->step_joints +
+              (size_t)w->walked_joint_capacity * sizeof *w->walked_joints +
               (size_t)w->step_joint_info_capacity * sizeof *w->step_joint_info +
               (size_t)w->scratch_capacity * sizeof *w->scratch;
   m->events = (size_t)w->begin_capacity * sizeof *w->begin_events + (size_t)w->end_capacity * sizeof *w->end_events +

@@ -85,6 +85,11 @@ typedef struct tb_world {
   int push_capacity;
   int* step_joints;
   int step_joint_count, step_joint_capacity;
+  /* the step joints as collect_joints (solver.c) walked them, kept while the walk would find the
+   * same: no body joined or left the awake set, no joint was linked or unlinked */
+  int* walked_joints;
+  int walked_joint_count, walked_joint_capacity;
+  bool walked_joints_valid;
   struct tb_step_joint* step_joint_info; /* per step joint, in step order (joint.h) */
   int step_joint_info_capacity;
   int scalar_joint_count; /* the first ones of step_joints, solved one at a time; the rest in wide_joints */

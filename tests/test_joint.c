@@ -1866,6 +1866,47 @@ START_TEST(trees_follow_joint_changes) {
 }
 END_TEST
 
+/* The step's joints are walked from the awake bodies once and kept while
+ * the awake set and the joint lists stay (solver.c, collect_joints). A
+ * pendulum that falls asleep beside one kept swinging, and is woken, must be
+ * held on its pin again: kept from before it woke, the step's joints missed
+ * its hinge and it fell free (its pin 1.36 m apart in the half second
+ * checked). */
+START_TEST(woken_pendulum_is_held_by_its_pin) {
+  tb_world_id w = tbt_world(0.0f, -10.0f);
+  tb_body_id ground = static_body(w, (tb_vec2){0.0f, 0.0f});
+  tb_body_id swinging = disc_body(w, (tb_vec2){-2.0f, -1.0f}, 0.1f, 1.0f);
+  tb_body_id resting = disc_body(w, (tb_vec2){2.0f, -1.0f}, 0.1f, 1.0f);
+  ck_assert_int_eq(tb_body_enable_sleep(swinging, false), TB_OK);
+  tb_body_set_linear_velocity(swinging, (tb_vec2){1.0f, 0.0f});
+  tb_revolute_joint_def jd = tb_default_revolute_joint_def();
+  jd.body_a = ground;
+  jd.local_anchor_b = (tb_vec2){0.0f, 1.0f};
+  jd.body_b = swinging;
+  jd.local_anchor_a = (tb_vec2){-2.0f, 0.0f};
+  tb_joint_id swing_pin = tb_create_revolute_joint(w, &jd);
+  jd.body_b = resting;
+  jd.local_anchor_a = (tb_vec2){2.0f, 0.0f};
+  tb_joint_id rest_pin = tb_create_revolute_joint(w, &jd);
+  ck_assert(!tb_joint_id_is_null(swing_pin) && !tb_joint_id_is_null(rest_pin));
+  int steps = 0;
+  while (tb_body_is_awake(resting) && steps < 600) step(w, 1), ++steps;
+  step(w, 10); /* steps without it: their joints are the swinging one's */
+  ck_assert(!tb_body_is_awake(resting));
+  ck_assert(tb_body_is_awake(swinging));
+  ck_assert_int_eq(tb_body_set_awake(resting, true), TB_OK);
+  tb_body_set_linear_velocity(resting, (tb_vec2){1.0f, 0.0f});
+  step(w, 30); /* a quarter swing (2 pi sqrt(L / g) = 1.99 s): out by v / omega = 0.32 m */
+  double gap = joint_gap(rest_pin), swung = tb_body_get_position(resting).x - 2.0f;
+  report("woken pendulum (asleep after %d steps): pin gap %.2e m after 0.5 s, swung %.3f m; the other's gap %.2e m",
+         steps, gap, swung, joint_gap(swing_pin));
+  ck_assert_double_lt(gap, 1e-3);
+  ck_assert_double_lt(joint_gap(swing_pin), 1e-3);
+  ck_assert_double_gt(swung, 0.25);
+  tb_destroy_world(w);
+}
+END_TEST
+
 static Suite* joint_suite(void) {
   Suite* s = suite_create("joint");
   TCase* physics = tcase_create("physics");
@@ -1905,6 +1946,7 @@ static Suite* joint_suite(void) {
   tcase_add_test(life, joint_to_a_disabled_body_is_idle);
   tcase_add_test(life, joints_without_warm_starting);
   tcase_add_test(life, trees_follow_joint_changes);
+  tcase_add_test(life, woken_pendulum_is_held_by_its_pin);
   suite_add_tcase(s, life);
   TCase* bad = tcase_create("bad_input");
   tcase_add_checked_fixture(bad, bad_setup, bad_teardown);
