@@ -738,7 +738,7 @@ static inline __attribute__((always_inline)) void substitute_kind(tb_world* w, t
     tb_vec2 dv = {(float)n->y[0], (float)n->y[1]};
     s->v = (tb_vec2){s->v.x + dv.x, s->v.y + dv.y};
     s->w += (float)n->y[2];
-    if (!use_bias) tb_relax_note(ctx, n->ref, tb_relax_speed(ctx, n->ref, dv, (float)n->y[2]));
+    if (!use_bias && ctx->relax_record) tb_relax_note(ctx, n->ref, tb_relax_speed(ctx, n->ref, dv, (float)n->y[2]));
   }
 }
 
@@ -802,7 +802,7 @@ static inline __attribute__((always_inline)) bool solve_lone_kind(int k, tb_join
     body->v = (tb_vec2){body->v.x + dv.x, body->v.y + dv.y};
     body->w += dw;
     int index = side == 0 ? n->sa : n->sb;
-    if (!use_bias) tb_relax_note(ctx, index, tb_relax_speed(ctx, index, dv, dw));
+    if (!use_bias && ctx->relax_record) tb_relax_note(ctx, index, tb_relax_speed(ctx, index, dv, dw));
   }
   return true;
 }

@@ -385,7 +385,7 @@ static inline __attribute__((always_inline)) void solve_block(const tb_world* w,
   if (j->points > 0) solve_point(j, states, s, use_bias, &A, &B); /* (none: trees hold every lane's point) */
   scatter(states, j->a, &A);
   scatter(states, j->b, &B);
-  if (!use_bias) {
+  if (!use_bias && ctx->relax_record) {
     note_moved(ctx, j->a, &A0, &A);
     note_moved(ctx, j->b, &B0, &B);
   }

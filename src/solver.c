@@ -267,6 +267,7 @@ static void relax_joint(tb_world* w, tb_step_context* ctx, int index) {
   if (!tb_relax_active(ctx, a) && !tb_relax_active(ctx, b)) return;
   tb_solver_body before_a = ctx->states[a], before_b = ctx->states[b];
   tb_joint_solve(w, index, ctx, false);
+  if (!ctx->relax_record) return;
   const tb_solver_body *sa = &ctx->states[a], *sb = &ctx->states[b];
   tb_relax_note(ctx, a, tb_relax_speed(ctx, a, tb_sub(sa->v, before_a.v), sa->w - before_a.w));
   tb_relax_note(ctx, b, tb_relax_speed(ctx, b, tb_sub(sb->v, before_b.v), sb->w - before_b.w));
@@ -285,6 +286,12 @@ static float relax_pass(tb_world* w, tb_step_context* ctx, int substep, int pass
     ctx->relax_all = pass == 0;
   else if (!ctx->relax_all && (int64_t)ctx->relax_solved * 10 > (int64_t)w->wide_count * 9)
     ctx->relax_all = true;
+  /* What this pass records is read by the next one only while that one
+   * skips (not once every later pass solves everything), and only if there
+   * is a next one: the passes repeat while a contact changes (a joint grid
+   * without contacts relaxes once a substep, and its record of the joints'
+   * bodies was 9% of its step). */
+  ctx->relax_record = pass == 0 ? w->relax_iterations > 1 && w->wide_count > 0 : !ctx->relax_all;
   ctx->relax_solved = 0;
   bool joints = w->step_joint_count > 0; /* (calls that find nothing cost a small scene 3%) */
   for (int k = 0; k < w->scalar_joint_count; ++k) relax_joint(w, ctx, w->step_joints[k]);

@@ -69,10 +69,11 @@ typedef struct tb_step_context {
    * distance from its centre of mass to its farthest point) */
   int32_t* changed_in;
   const float* reach;
-  int relax_pass;   /* the current relax pass, counted from 1 over the step */
-  bool relax_all;   /* every constraint is solved in this relax pass (and nothing recorded) */
-  int relax_solved; /* contact blocks the last relax pass solved */
-  bool four_lanes;  /* contacts four lanes at a time even where eight could be (tests' reference) */
+  int relax_pass;    /* the current relax pass, counted from 1 over the step */
+  bool relax_all;    /* every constraint is solved in this relax pass (and nothing recorded) */
+  bool relax_record; /* a later relax pass of this substep may read what this one records */
+  int relax_solved;  /* contact blocks the last relax pass solved */
+  bool four_lanes;   /* contacts four lanes at a time even where eight could be (tests' reference) */
   /* the world, for the contact solver's question whether a face runs on
    * (tb_contact_face_runs_on: a read of the broad phase and the bodies'
    * transforms, which stay the step start's during the substeps) */
