@@ -580,6 +580,12 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
   t->compliance = g;
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
+    /* the joint records lie all over memory: ask eight nodes ahead (they
+     * waited on the first read of each, 2.5% of rain's step) */
+    if ((fresh || use_bias) && i + 8 < t->node_count && !t->nodes[i + 8].body) {
+      const char* r = (const char*)tb_joint_at(w, t->nodes[i + 8].ref);
+      for (size_t line = 0; line < sizeof(tb_joint); line += 64) __builtin_prefetch(r + line);
+    }
     if (n->body) {
       if (fresh && n->parent >= 0 && !n->lone) body_block(n, &t->nodes[n->parent], t->nodes[n->parent].a == i);
       continue;
