@@ -307,6 +307,7 @@ bool tb_contact_create(tb_world* w, int ia, int ib) {
   if (sa->enable_pre_solve_events || sb->enable_pre_solve_events) c->flags |= TB_CONTACT_PRE_SOLVE;
   link_edge(w, index, 0);
   link_edge(w, index, 1);
+  w->layout_valid = false; /* (a pool slot may now hold another pair) */
   return true;
 }
 
@@ -336,6 +337,7 @@ void tb_contact_destroy(tb_world* w, int index) {
   unlink_edge(w, index, 0);
   unlink_edge(w, index, 1);
   tb_pool_release(&w->contacts, index);
+  w->layout_valid = false;
 }
 
 void tb_contacts_destroy_of_body(tb_world* w, int body, int shape) {

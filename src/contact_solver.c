@@ -539,19 +539,11 @@ static void pair_blocks(tb_wide_contact* wide, const int* end_lane, int colors) 
   }
 }
 
-bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
+/* The blocks' layout: each contact's colour and lane, each lane's step
+ * contact (lane_contacts), the moving bodies' contact degrees, and the first
+ * block of the fixed colours. Needs scratch for bodies + 4 x contacts ints. */
+static bool lay_out_blocks(tb_world* w, const tb_step_context* ctx) {
   int count = w->step_contact_count;
-  if (count == 0) { /* a pendulum, bodies in flight: what the path below leaves, without its walks */
-    if (!tb_array_reserve((void**)&w->contact_degree, &w->degree_capacity, ctx->static_index + 1, 1)) return false;
-    memset(w->contact_degree, 0, (size_t)ctx->static_index + 1);
-    w->wide_count = w->wide_fixed_from = w->deep_count = 0;
-    ctx->push_velocities = NULL;
-    return true;
-  }
-  if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
-      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 4 * count, sizeof(int)) ||
-      !tb_array_reserve((void**)&w->contact_degree, &w->degree_capacity, ctx->static_index + 1, 1))
-    return false;
   int fixed_from = 0;
   int colors = color_constraints(w, ctx, &fixed_from);
 
@@ -569,21 +561,59 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
     next_lane[c] = 4 * blocks;
     blocks += (in_color + 3) / 4;
   }
-  /* the step contact of each lane (-1: unused) in the int scratch, where the
-   * colouring was */
   if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, sizeof(tb_wide_contact)) ||
-      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, 4 * blocks + 1, sizeof(int)))
+      !tb_array_reserve((void**)&w->lane_contacts, &w->lane_contact_capacity, 4 * blocks + 1, sizeof(int32_t)) ||
+      !tb_array_reserve((void**)&w->laid_out_contacts, &w->laid_out_capacity, count, sizeof(int32_t)))
     return false;
-  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
   w->wide_count = blocks;
   if (fixed_from == colors) w->wide_fixed_from = blocks;
-  int32_t* lane_contact = w->scratch;
+  int32_t* lane_contact = w->lane_contacts;
   memset(lane_contact, 0xff, (size_t)(4 * blocks) * sizeof *lane_contact);
   for (int k = 0; k < count; ++k) {
     int lane = next_lane[cs[k].lane]++;
     cs[k].lane = lane;
     lane_contact[lane] = k;
   }
+  memcpy(w->laid_out_contacts, w->step_contacts, (size_t)count * sizeof *w->step_contacts);
+  w->laid_out_count = count;
+  w->laid_out_colors = colors;
+  w->layout_valid = true;
+  return true;
+}
+
+/* Whether the last layout holds for this step's contacts. A resting pile
+ * keeps its contacts, and so its colours and lanes, step after step: the
+ * colouring's walk over the contacts and their bodies (scattered in memory)
+ * is then not repeated. The layout depends on the step contacts in their
+ * order (compared here), which contact each pool slot holds, the solver
+ * bodies and which of them have joints (any change of those clears
+ * layout_valid). */
+static bool layout_holds(const tb_world* w) {
+  return w->layout_valid && w->laid_out_count == w->step_contact_count &&
+         memcmp(w->laid_out_contacts, w->step_contacts, (size_t)w->laid_out_count * sizeof *w->step_contacts) == 0;
+}
+
+bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
+  int count = w->step_contact_count;
+  if (count == 0) { /* a pendulum, bodies in flight: what the path below leaves, without its walks */
+    if (!tb_array_reserve((void**)&w->contact_degree, &w->degree_capacity, ctx->static_index + 1, 1)) return false;
+    memset(w->contact_degree, 0, (size_t)ctx->static_index + 1);
+    w->wide_count = w->wide_fixed_from = w->deep_count = 0;
+    w->layout_valid = false;
+    ctx->push_velocities = NULL;
+    return true;
+  }
+  if (!tb_array_reserve((void**)&w->constraints, &w->constraint_capacity, count + 1, sizeof(tb_contact_constraint)) ||
+      !tb_array_reserve((void**)&w->scratch, &w->scratch_capacity, ctx->static_index + 1 + 4 * count, sizeof(int)) ||
+      !tb_array_reserve((void**)&w->contact_degree, &w->degree_capacity, ctx->static_index + 1, 1))
+    return false;
+  if (!layout_holds(w) && !lay_out_blocks(w, ctx)) {
+    w->layout_valid = false;
+    return false;
+  }
+  tb_wide_contact* wide = (tb_wide_contact*)w->wide;
+  int blocks = w->wide_count;
+  const int32_t* lane_contact = w->lane_contacts;
   for (int b = 0; b < blocks; ++b) {
     const int32_t* k = &lane_contact[4 * b];
     if (b + 1 < blocks) /* the next block's contacts, ahead of their turn */
@@ -592,7 +622,7 @@ bool tb_contact_solver_prepare(tb_world* w, tb_step_context* ctx) {
     prepare_block(w, ctx, k, &wide[b]);
     wide[b].isolated = lanes_isolated(w->contact_degree, &wide[b]);
   }
-  pair_blocks(wide, next_lane, colors);
+  pair_blocks(wide, w->color_lanes, w->laid_out_colors);
   return collect_deep_contacts(w, ctx);
 }
 
@@ -1709,6 +1739,8 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
 size_t tb_contact_solver_bytes(const tb_world* w) {
   return (size_t)w->constraint_capacity * sizeof(tb_contact_constraint) +
          (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->degree_capacity +
+         (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts +
+         (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts +
          (size_t)w->wide_capacity * sizeof(tb_wide_contact) + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
          (size_t)w->push_capacity * sizeof *w->push_velocities;
 }
@@ -1716,6 +1748,8 @@ size_t tb_contact_solver_bytes(const tb_world* w) {
 void tb_contact_solver_free(tb_world* w) {
   tb_mem_free(w->constraints, (size_t)w->constraint_capacity * sizeof(tb_contact_constraint));
   tb_mem_free(w->color_lanes, (size_t)w->color_capacity * sizeof *w->color_lanes);
+  tb_mem_free(w->lane_contacts, (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts);
+  tb_mem_free(w->laid_out_contacts, (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts);
   tb_mem_free(w->contact_degree, (size_t)w->degree_capacity);
   tb_mem_free(w->wide, (size_t)w->wide_capacity * sizeof(tb_wide_contact));
   tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_block));

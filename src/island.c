@@ -36,6 +36,7 @@ static bool awake_push(tb_world* w, int body) {
   b->sleep_time = 0.0f;
   w->awake[w->awake_count++] = body;
   w->walked_joints_valid = false; /* (collect_joints walks the awake bodies) */
+  w->layout_valid = false;        /* (the contacts' colours are by solver body) */
   return true;
 }
 
@@ -48,6 +49,7 @@ static void awake_remove(tb_world* w, int body) {
   tb_body_at(w, last)->awake_index = hole;
   b->awake_index = -1;
   w->walked_joints_valid = false;
+  w->layout_valid = false;
 }
 
 static void wake_island(tb_world* w, int island) {

@@ -769,6 +769,7 @@ static void link_edge(tb_world* w, int joint, int side) {
   b->joint_list = key;
   b->joint_count += 1;
   w->walked_joints_valid = false; /* (collect_joints walks the joint lists) */
+  w->layout_valid = false;        /* (a jointed body's contact is never solved alone) */
 }
 
 static void unlink_edge(tb_world* w, int joint, int side) {
@@ -782,6 +783,7 @@ static void unlink_edge(tb_world* w, int joint, int side) {
   if (e->next >= 0) tb_joint_at(w, e->next >> 1)->edges[e->next & 1].prev = e->prev;
   b->joint_count -= 1;
   w->walked_joints_valid = false;
+  w->layout_valid = false;
 }
 
 bool tb_joints_allow_collision(const tb_world* w, int body_a, int body_b) {

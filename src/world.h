@@ -74,6 +74,14 @@ typedef struct tb_world {
   int constraint_capacity;
   int* color_lanes; /* per colour: contacts, then the next lane (contact_solver.c) */
   int color_capacity;
+  /* the blocks' layout (contact_solver.c: lay_out_blocks), kept while the step contacts are those it
+   * was laid out for and no contact, awake body or joint link came or went (contact.c, island.c,
+   * joint.c) */
+  int32_t* lane_contacts; /* per lane of the blocks: its step contact, -1 for an unused lane */
+  int lane_contact_capacity;
+  int32_t* laid_out_contacts; /* the step contacts the layout is for */
+  int laid_out_count, laid_out_capacity, laid_out_colors;
+  bool layout_valid;
   uint8_t* contact_degree; /* per solver body: 0, 1 or 2 for more contacts or a joint (contact_solver.c) */
   int degree_capacity;
   void* wide; /* coloured blocks of four contacts */
