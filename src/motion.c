@@ -127,7 +127,9 @@ static inline __attribute__((always_inline)) bool step_midpoint(const body_ctx* 
  * positions and angles that only a field reads (elastic_balls: the free
  * bodies' integration was a fifth of its instructions). Not checked per
  * substep either: a state that is not finite stays so through the caps and
- * the stages (as in derivative), and tb_integrate_free_body checks the end. */
+ * the stages (as in derivative), and tb_integrate_free_body checks the end.
+ * capped: whether the speed caps are applied (below_caps tells where they
+ * cannot change anything). */
 static inline __attribute__((always_inline)) void step_midpoint_unforced(const body_ctx* c, double h, state* y,
                                                                          bool capped) {
   const tb_body* b = c->body;
