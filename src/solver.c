@@ -277,7 +277,7 @@ static float relax_pass(tb_world* w, tb_step_context* ctx, int substep, int pass
    * skips (not once every later pass solves everything), and only if there
    * is a next one: the passes repeat while a contact changes (a joint grid
    * without contacts relaxes once a substep, and its record of the joints'
-   * bodies was 9% of its step). */
+   * bodies was 6% of its step). */
   ctx->relax_record = pass == 0 ? w->relax_iterations > 1 && w->wide_count > 0 : !ctx->relax_all;
   ctx->relax_solved = 0;
   bool joints = w->step_joint_count > 0; /* (calls that find nothing cost a small scene 3%) */
