@@ -49,6 +49,7 @@ bench-v3:
 	  test -f "$(BOX2D_V3_DIR)/shared/benchmarks.c" || { \
 	  echo "make bench-v3: set BOX2D_V3_DIR to a Box2D v3 source tree (with include/box2d/box2d.h and shared/benchmarks.c)" >&2; \
 	  exit 2; }
+	@mkdir -p $(BUILD)
 	cmake -S "$(BOX2D_V3_DIR)" -B $(V3_BUILD) -DCMAKE_BUILD_TYPE=Release -DBOX2D_SAMPLES=OFF -DBOX2D_UNIT_TESTS=OFF \
 	  -DBOX2D_BENCHMARKS=ON -DBOX2D_DOCS=OFF >$(V3_BUILD).cmake.log 2>&1 || { cat $(V3_BUILD).cmake.log; exit 1; }
 	cmake --build $(V3_BUILD) --target box2d shared -j2
