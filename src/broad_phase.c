@@ -22,7 +22,6 @@ void tb_broad_phase_free(tb_broad_phase* bp) {
   for (int i = 0; i < 3; ++i) tb_tree_destroy(&bp->trees[i]);
   tb_mem_free(bp->move_buffer, (size_t)bp->move_capacity * sizeof *bp->move_buffer);
   tb_mem_free(bp->pair_keys, (size_t)bp->pair_capacity * sizeof *bp->pair_keys);
-  tb_mem_free(bp->pair_contacts, (size_t)bp->pair_capacity * sizeof *bp->pair_contacts);
   memset(bp, 0, sizeof *bp);
 }
 
@@ -32,9 +31,7 @@ size_t tb_broad_phase_tree_bytes(const tb_broad_phase* bp) {
   return bytes;
 }
 
-size_t tb_broad_phase_pair_bytes(const tb_broad_phase* bp) {
-  return (size_t)bp->pair_capacity * (sizeof *bp->pair_keys + sizeof *bp->pair_contacts);
-}
+size_t tb_broad_phase_pair_bytes(const tb_broad_phase* bp) { return (size_t)bp->pair_capacity * sizeof *bp->pair_keys; }
 
 bool tb_filters_collide(tb_filter a, tb_filter b) {
   if (a.group_index == b.group_index && a.group_index != 0) return a.group_index > 0;
@@ -57,23 +54,19 @@ static uint32_t pair_hash(uint64_t key) {
 
 static const uint64_t DELETED = UINT64_MAX;
 
-int tb_pair_find(const tb_broad_phase* bp, int a, int b) {
-  if (bp->pair_capacity == 0) return -1;
+bool tb_pair_exists(const tb_broad_phase* bp, int a, int b) {
+  if (bp->pair_capacity == 0) return false;
   uint64_t key = pair_key(a, b);
   uint32_t mask = (uint32_t)bp->pair_capacity - 1;
   for (uint32_t i = pair_hash(key) & mask;; i = (i + 1) & mask) {
-    if (bp->pair_keys[i] == key) return bp->pair_contacts[i];
-    if (bp->pair_keys[i] == 0) return -1;
+    if (bp->pair_keys[i] == key) return true;
+    if (bp->pair_keys[i] == 0) return false;
   }
 }
 
 static bool pair_rehash(tb_broad_phase* bp, int capacity) {
   uint64_t* keys = tb_mem_alloc((size_t)capacity * sizeof *keys);
-  int32_t* contacts = keys != NULL ? tb_mem_alloc((size_t)capacity * sizeof *contacts) : NULL;
-  if (contacts == NULL) {
-    tb_mem_free(keys, (size_t)capacity * sizeof *keys);
-    return false;
-  }
+  if (keys == NULL) return false;
   memset(keys, 0, (size_t)capacity * sizeof *keys);
   uint32_t mask = (uint32_t)capacity - 1;
   for (int i = 0; i < bp->pair_capacity; ++i) {
@@ -82,18 +75,15 @@ static bool pair_rehash(tb_broad_phase* bp, int capacity) {
     uint32_t j = pair_hash(key) & mask;
     while (keys[j] != 0) j = (j + 1) & mask;
     keys[j] = key;
-    contacts[j] = bp->pair_contacts[i];
   }
   tb_mem_free(bp->pair_keys, (size_t)bp->pair_capacity * sizeof *bp->pair_keys);
-  tb_mem_free(bp->pair_contacts, (size_t)bp->pair_capacity * sizeof *bp->pair_contacts);
   bp->pair_keys = keys;
-  bp->pair_contacts = contacts;
   bp->pair_capacity = capacity;
   bp->pair_used = bp->pair_count;
   return true;
 }
 
-bool tb_pair_add(tb_broad_phase* bp, int a, int b, int contact) {
+bool tb_pair_add(tb_broad_phase* bp, int a, int b) {
   /* keep the load (live + deleted slots) under 1/2 */
   if (2 * (bp->pair_used + 1) > bp->pair_capacity) {
     int cap = bp->pair_capacity < 64 ? 64 : bp->pair_capacity;
@@ -106,7 +96,6 @@ bool tb_pair_add(tb_broad_phase* bp, int a, int b, int contact) {
   while (bp->pair_keys[i] != 0 && bp->pair_keys[i] != DELETED) i = (i + 1) & mask;
   if (bp->pair_keys[i] == 0) bp->pair_used += 1;
   bp->pair_keys[i] = key;
-  bp->pair_contacts[i] = contact;
   bp->pair_count += 1;
   return true;
 }
@@ -273,6 +262,12 @@ static bool pair_callback(int32_t proxy, int32_t other, void* context) {
   pair_query* q = context;
   tb_world* w = q->w;
   if (other == q->shape) return true;
+  /* The pair set's slot and the other shape's record are both cache misses
+   * in a scene of thousands of shapes: ask for the slot first, so that the
+   * two loads overlap. */
+  const tb_broad_phase* bp = &w->broad_phase;
+  if (bp->pair_capacity > 0)
+    __builtin_prefetch(&bp->pair_keys[pair_hash(pair_key(q->shape, other)) & (uint32_t)(bp->pair_capacity - 1)]);
   /* both moved and in the same tree: the pair is found from both sides; take
    * it once, from the higher index, so the order of creation is fixed */
   const tb_shape* o = tb_shape_at(w, other);
@@ -283,7 +278,7 @@ static bool pair_callback(int32_t proxy, int32_t other, void* context) {
    * which misses the cache (rain's ragdolls found their own limbs in most of
    * their queries, every step). */
   if (o->body == s->body || (o->filter.group_index < 0 && o->filter.group_index == s->filter.group_index)) return true;
-  if (tb_pair_find(&w->broad_phase, q->shape, other) >= 0) return true;
+  if (tb_pair_exists(bp, q->shape, other)) return true;
   if (!should_pair(w, q->shape, other)) return true;
   (void)tb_contact_create(w, q->shape, other); /* out of memory: retried when it moves again */
   return true;

@@ -21,9 +21,11 @@ typedef struct tb_broad_phase {
   tb_tree trees[3]; /* indexed by tb_body_type */
   int* move_buffer; /* shape indices; -1 for a proxy destroyed since */
   int move_count, move_capacity;
-  /* open-addressing hash set of pairs: key (low shape << 32 | high shape) */
+  /* open-addressing hash set of the shape pairs that have a contact: key (low
+   * shape << 32 | high shape) + 1. Keys only: the pair query asks whether a
+   * pair exists, never which contact it is (a second array for that cost
+   * every found pair a second cache miss). */
   uint64_t* pair_keys; /* 0 = empty slot, UINT64_MAX = deleted */
-  int32_t* pair_contacts;
   int pair_capacity, pair_count, pair_used;
 } tb_broad_phase;
 
@@ -62,8 +64,8 @@ bool tb_broad_phase_refilter_proxy(struct tb_world* w, int shape);
 /* New contacts for the pairs of the queued proxies; clears the queue. */
 void tb_broad_phase_update_pairs(struct tb_world* w);
 
-int tb_pair_find(const tb_broad_phase* bp, int shape_a, int shape_b);
-bool tb_pair_add(tb_broad_phase* bp, int shape_a, int shape_b, int contact);
+bool tb_pair_exists(const tb_broad_phase* bp, int shape_a, int shape_b);
+bool tb_pair_add(tb_broad_phase* bp, int shape_a, int shape_b);
 void tb_pair_remove(tb_broad_phase* bp, int shape_a, int shape_b);
 
 /* Filter bits and groups (see tb_filter in tumble.h). */

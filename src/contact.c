@@ -283,7 +283,7 @@ bool tb_contact_create(tb_world* w, int ia, int ib) {
   }
   int index = tb_pool_alloc(&w->contacts);
   if (index < 0) return false;
-  if (!tb_pair_add(&w->broad_phase, ia, ib, index)) {
+  if (!tb_pair_add(&w->broad_phase, ia, ib)) {
     tb_pool_release(&w->contacts, index);
     return false;
   }
