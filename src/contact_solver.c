@@ -70,12 +70,12 @@
 
 /* Four contacts of one colour, field by field. A lane holds one contact
  * constraint; a contact with one point has an inert second point (no mass,
- * far apart) so that every lane has two. Each contact block is laid out hot
- * first: what every pass reads (the header up to p, and per point a
- * tb_wide_point), then what only the first pass after a position update,
- * the push-out, restitution and prepare read (the rest, and per point a
- * tb_wide_anchor). A relax pass then streams half the bytes it would with
- * the fields mixed (large_pyramid holds 4.7 MB of blocks, beyond L2). */
+ * far apart) so that every lane has two. Each contact block has a hot part,
+ * what every pass reads (tb_wide_contact: the header, and per point a
+ * tb_wide_point), and a cold part, what only the first pass after a position
+ * update, the push-out, restitution and prepare read (tb_wide_cold, with per
+ * point a tb_wide_anchor), in two arrays: a relax pass streams only the hot
+ * one (large_pyramid holds 4.7 MB of blocks, beyond L2). */
 typedef struct tb_wide_point {
   tb_f4 now_rax, now_ray, now_rbx, now_rby; /* the arms to the common point now (see arms_now) */
   tb_f4 separation;                         /* s at the last position update (see tb_contact_solver_solve) */
@@ -97,21 +97,32 @@ typedef struct tb_wide_anchor {
 } tb_wide_anchor;
 
 typedef struct tb_wide_contact {
-  int32_t a[4], b[4]; /* solver bodies */
-  int32_t rolling;    /* any lane with rolling resistance */
-  int32_t bouncy;     /* any lane with restitution (which needs the arms the impulses acted at) */
-  int32_t slid_off;   /* any lane past its patch by more than TB_SLIDE_TOLERANCE */
-  int32_t ends_near;  /* bit 2 lane + end (0: min, 1: max): the end lies within reach of this step */
-  int32_t ends_asked; /* the same bits: tb_contact_face_runs_on answered this step */
-  int32_t pair;       /* +1: solved with the next block, -1: with the one before, 0: alone (see solve_pair) */
-  int32_t isolated;   /* every lane's moving bodies have this contact alone: its relax solve iterates (solve_wide) */
+  int32_t a[4], b[4];  /* solver bodies */
+  int32_t rolling;     /* any lane with rolling resistance */
+  int32_t bouncy;      /* any lane with restitution (which needs the arms the impulses acted at) */
+  int32_t slid_off;    /* any lane past its patch by more than TB_SLIDE_TOLERANCE */
+  int32_t ends_near;   /* bit 2 lane + end (0: min, 1: max): the end lies within reach of this step */
+  int32_t ends_asked;  /* the same bits: tb_contact_face_runs_on answered this step */
+  int32_t pair;        /* +1: solved with the next block, -1: with the one before, 0: alone (see solve_pair) */
+  int32_t isolated;    /* every lane's moving bodies have this contact alone: its relax solve iterates (solve_wide) */
+  int32_t cold_offset; /* blocks from this one to its cold part (cold_of) */
   tb_f4 nx, ny, friction, tangent_speed;
   tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
   tb_f4 bias_rate, mass_scale;
   /* both points' normal impulses solved together: K (symmetric) and its inverse */
   tb_f4 k11, k12, k22, n11, n12, n22, block; /* block: 1 where both points are solved together */
   tb_wide_point p[2];
-  /* cold from here */
+} tb_wide_contact;
+
+/* A block's cold part: what only the first pass after a position update, the
+ * push-out, restitution, rolling resistance and prepare read. The cold parts
+ * lie in an array of their own after the hot blocks (one allocation, w->wide:
+ * capacity hot blocks, then capacity cold ones), so that a relax pass streams
+ * only the hot blocks: with the cold half between them, the hardware
+ * prefetchers pulled it in too (cold parts padded by 640 bytes more made
+ * many_pyramids 1.25 times slower). Both parts have one size, so a block
+ * finds its cold part cold_offset (the capacity) blocks on. */
+typedef struct tb_wide_cold {
   tb_f4 rolling_resistance, rolling_mass, rolling_impulse;
   tb_f4 shift_limit; /* how far (per axis) the arms follow the relative displacement (see arms_now) */
   /* the contact patch (tb_patch): how far B's incident core may slide along
@@ -120,7 +131,13 @@ typedef struct tb_wide_contact {
   tb_f4 slide_min, slide_max, lever_a, lever_b, core_radius;
   int32_t contact[4]; /* each lane's contact (pool index), -1 in an unused lane */
   tb_wide_anchor q[2];
-} tb_wide_contact;
+  tb_f4 unused; /* (to the hot block's size) */
+} tb_wide_cold;
+_Static_assert(sizeof(tb_wide_cold) == sizeof(tb_wide_contact), "cold_of steps in blocks of the hot block's size");
+
+static inline __attribute__((always_inline)) tb_wide_cold* cold_of(const tb_wide_contact* c) {
+  return (tb_wide_cold*)(void*)(c + c->cold_offset);
+}
 
 /* What a contact constraint keeps besides its lane: where the lane is, and
  * what restitution needs after the substeps. One per step contact, in step
@@ -191,7 +208,7 @@ static inline void set_masses(tb_wide_contact* wc) {
   tb_f4 rn[2][2]; /* r x n of each point at A and B, for the block terms */
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* wp = &wc->p[p];
-    tb_i4 live = wc->q[p].live > zero;
+    tb_i4 live = cold_of(wc)->q[p].live > zero;
     tb_f4 rax = wp->now_rax, ray = wp->now_ray, rbx = wp->now_rbx, rby = wp->now_rby;
     tb_f4 rna = rax * ny - ray * nx, rnb = rbx * ny - rby * nx;
     tb_f4 rta = rax * ty - ray * tx, rtb = rbx * ty - rby * tx;
@@ -201,7 +218,7 @@ static inline void set_masses(tb_wide_contact* wc) {
     rn[p][1] = blend(live, rnb, zero);
   }
   tb_f4 r1a = rn[0][0], r1b = rn[0][1], r2a = rn[1][0], r2b = rn[1][1];
-  tb_i4 two = wc->q[1].live > zero;
+  tb_i4 two = cold_of(wc)->q[1].live > zero;
   tb_f4 k11 = ma + mb + ja * r1a * r1a + jb * r1b * r1b;
   tb_f4 k22 = blend(two, ma + mb + ja * r2a * r2a + jb * r2b * r2b, zero);
   tb_f4 k12 = blend(two, ma + mb + ja * r1a * r2a + jb * r1b * r2b, zero);
@@ -229,9 +246,10 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   static const tb_body no_body;
   const tb_contact* c[4];
   const tb_body *ba[4], *bb[4];
+  wc->cold_offset = w->wide_capacity; /* (see tb_wide_cold) */
   for (int lane = 0; lane < 4; ++lane) {
-    wc->contact[lane] = k[lane] >= 0 ? w->step_contacts[k[lane]] : -1;
-    c[lane] = k[lane] >= 0 ? (const tb_contact*)tb_pool_at(&w->contacts, wc->contact[lane]) : &no_contact;
+    cold_of(wc)->contact[lane] = k[lane] >= 0 ? w->step_contacts[k[lane]] : -1;
+    c[lane] = k[lane] >= 0 ? (const tb_contact*)tb_pool_at(&w->contacts, cold_of(wc)->contact[lane]) : &no_contact;
     ba[lane] = k[lane] >= 0 ? tb_body_at(w, c[lane]->edges[0].body) : &no_body;
     bb[lane] = k[lane] >= 0 ? tb_body_at(w, c[lane]->edges[1].body) : &no_body;
     wc->a[lane] = k[lane] >= 0 ? solver_index(ctx, ba[lane]) : ctx->static_index;
@@ -248,9 +266,9 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wc->ny = ny;
   wc->friction = LANES(c, friction);
   wc->tangent_speed = LANES(c, tangent_speed);
-  wc->rolling_resistance = rolling_resistance;
-  wc->rolling_mass = inverse_or_zero(ja + jb);
-  wc->rolling_impulse = ctx->enable_warm_starting ? LANES(c, rolling_impulse) : zero;
+  cold_of(wc)->rolling_resistance = rolling_resistance;
+  cold_of(wc)->rolling_mass = inverse_or_zero(ja + jb);
+  cold_of(wc)->rolling_impulse = ctx->enable_warm_starting ? LANES(c, rolling_impulse) : zero;
   tb_f4 restitution = LANES(c, restitution);
   wc->bouncy =
       (restitution[0] != 0.0f) | (restitution[1] != 0.0f) | (restitution[2] != 0.0f) | (restitution[3] != 0.0f);
@@ -263,17 +281,17 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 mass_share = mb * inverse_or_zero(ma + mb); /* beta by the inverse masses (see arms_now) */
   tb_i4 both_move = (ma > zero) & (mb > zero);
   tb_f4 extent_a = LANES(ba, max_extent), extent_b = LANES(bb, max_extent);
-  wc->shift_limit = min4(extent_a, extent_b);
-  wc->slide_min = LANES(c, patch.slide_min);
-  wc->slide_max = LANES(c, patch.slide_max);
-  wc->core_radius = LANES(c, patch.radius);
+  cold_of(wc)->shift_limit = min4(extent_a, extent_b);
+  cold_of(wc)->slide_min = LANES(c, patch.slide_min);
+  cold_of(wc)->slide_max = LANES(c, patch.slide_max);
+  cold_of(wc)->core_radius = LANES(c, patch.radius);
   wc->slid_off = 0; /* nothing has moved yet: within every patch */
   /* A patch end within reach of this step (how far the bodies can slide:
    * |dv|_1 >= |dv| bounds their relative speed without a square root) may lie
    * where the face runs on into another shape (see ask_ends). */
   tb_f4 speed = (fabs4(B.vx - A.vx) + fabs4(B.vy - A.vy)) + (fabs4(A.w) * extent_a + fabs4(B.w) * extent_b);
   tb_f4 reach = speed * splat(ctx->dt) + splat(tb_units.linear_slop);
-  tb_i4 near_min = wc->slide_min > -reach, near_max = wc->slide_max < reach;
+  tb_i4 near_min = cold_of(wc)->slide_min > -reach, near_max = cold_of(wc)->slide_max < reach;
   tb_i4 end_bits = (near_min & (tb_i4){1, 4, 16, 64}) | (near_max & (tb_i4){2, 8, 32, 128});
   wc->ends_near = (end_bits[0] | end_bits[1]) | (end_bits[2] | end_bits[3]);
   wc->ends_asked = 0;
@@ -289,7 +307,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   tb_f4 approach[2]; /* normal speed of each point at the step start, for restitution */
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* wp = &wc->p[p];
-    tb_wide_anchor* wq = &wc->q[p];
+    tb_wide_anchor* wq = &cold_of(wc)->q[p];
     tb_i4 used = point_count > (tb_i4){p, p, p, p};
     /* ra = point - centre of A, rb likewise; r x n and r x t (tb_cross) */
     tb_f4 rax = LANES(c, manifold.points[p].point.x) - cax, ray = LANES(c, manifold.points[p].point.y) - cay;
@@ -297,8 +315,8 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     tb_f4 normal_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].normal_impulse) : zero;
     tb_f4 tangent_impulse = ctx->enable_warm_starting ? LANES(c, manifold.points[p].tangent_impulse) : zero;
     if (p == 0) { /* the points lie on one line across the normal: the first one's levers serve both */
-      wc->lever_a = rax * nx + ray * ny + LANES(c, patch.offset_a);
-      wc->lever_b = rbx * nx + rby * ny + LANES(c, patch.offset_b);
+      cold_of(wc)->lever_a = rax * nx + ray * ny + LANES(c, patch.offset_a);
+      cold_of(wc)->lever_b = rbx * nx + rby * ny + LANES(c, patch.offset_b);
     }
     wq->rax = blend(used, rax, zero);
     wq->ray = blend(used, ray, zero);
@@ -356,7 +374,7 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
    * approach (speed x dt) can drive in during this one. Bodies created or
    * moved into each other have no approach, and a pile is still pushed out;
    * against static and kinematic bodies nothing changes (no momentum to keep). */
-  tb_f4 depth = max4(max4(-wc->q[0].base_separation, -wc->q[1].base_separation), zero);
+  tb_f4 depth = max4(max4(-cold_of(wc)->q[0].base_separation, -cold_of(wc)->q[1].base_separation), zero);
   tb_f4 driven = blend(rigid_other, zero, max4(max4(-approach[0], -approach[1]), zero) * splat(ctx->dt));
   tb_f4 impact_depth = min4(depth, LANES(c, impact_depth)) + driven;
   wc->p[0].push_depth = blend(
@@ -426,8 +444,8 @@ static tb_i4 deep_lanes(const tb_wide_contact* c) {
   tb_i4 deep = {0, 0, 0, 0};
   for (int p = 0; p < 2; ++p) {
     const tb_wide_point* wp = &c->p[p];
-    deep |=
-        (c->q[p].base_separation + wp->push_depth < splat(0.5f * TB_DEEP_OVERLAP)) & (wp->normal_mass > splat(0.0f));
+    deep |= (cold_of(c)->q[p].base_separation + wp->push_depth < splat(0.5f * TB_DEEP_OVERLAP)) &
+            (wp->normal_mass > splat(0.0f));
   }
   return deep;
 }
@@ -561,7 +579,7 @@ static bool lay_out_blocks(tb_world* w, const tb_step_context* ctx) {
     next_lane[c] = 4 * blocks;
     blocks += (in_color + 3) / 4;
   }
-  if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, sizeof(tb_wide_contact)) ||
+  if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, 2 * sizeof(tb_wide_contact)) ||
       !tb_array_reserve((void**)&w->lane_contacts, &w->lane_contact_capacity, 4 * blocks + 1, sizeof(int32_t)) ||
       !tb_array_reserve((void**)&w->laid_out_contacts, &w->laid_out_capacity, count, sizeof(int32_t)))
     return false;
@@ -657,8 +675,8 @@ typedef struct wide_arms {
 
 static inline __attribute__((always_inline)) wide_arms arms_now(const tb_wide_contact* c, const tb_wide_anchor* cp,
                                                                 const wide_body* A, const wide_body* B) {
-  tb_f4 dx = min4(max4(B->dpx - A->dpx, -c->shift_limit), c->shift_limit);
-  tb_f4 dy = min4(max4(B->dpy - A->dpy, -c->shift_limit), c->shift_limit);
+  tb_f4 dx = min4(max4(B->dpx - A->dpx, -cold_of(c)->shift_limit), cold_of(c)->shift_limit);
+  tb_f4 dy = min4(max4(B->dpy - A->dpy, -cold_of(c)->shift_limit), cold_of(c)->shift_limit);
   return (wide_arms){cp->rax + cp->shift_a * dx, cp->ray + cp->shift_a * dy, cp->rbx + cp->shift_b * dx,
                      cp->rby + cp->shift_b * dy};
 }
@@ -702,13 +720,15 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
     wide_arms arms = stored_arms(cp);
-    if (c->bouncy) count_normal(&c->q[p], &arms, cp->normal_impulse);
+    if (c->bouncy) count_normal(&cold_of(c)->q[p], &arms, cp->normal_impulse);
     tb_f4 Px = cp->normal_impulse * c->nx + cp->tangent_impulse * tx;
     tb_f4 Py = cp->normal_impulse * c->ny + cp->tangent_impulse * ty;
     apply_impulse(c, &arms, Px, Py, &A, &B);
   }
-  A.w -= c->ja * c->rolling_impulse;
-  B.w += c->jb * c->rolling_impulse;
+  if (c->rolling) { /* (a block without rolling resistance holds no rolling impulse) */
+    A.w -= c->ja * cold_of(c)->rolling_impulse;
+    B.w += c->jb * cold_of(c)->rolling_impulse;
+  }
   scatter(states, c->a, &A);
   scatter(states, c->b, &B);
 }
@@ -762,17 +782,17 @@ static inline __attribute__((always_inline)) tb_f4 normal_motion(const tb_wide_c
  * asked again when it is passed. */
 static __attribute__((noinline)) tb_f4 ask_ends(tb_wide_contact* c, const tb_step_context* ctx, tb_f4 d, tb_f4 beyond) {
   for (int lane = 0; lane < 4; ++lane) {
-    if (!(beyond[lane] > TB_SLIDE_TOLERANCE) || c->contact[lane] < 0) continue;
-    bool max_end = d[lane] - c->slide_max[lane] >= c->slide_min[lane] - d[lane];
+    if (!(beyond[lane] > TB_SLIDE_TOLERANCE) || cold_of(c)->contact[lane] < 0) continue;
+    bool max_end = d[lane] - cold_of(c)->slide_max[lane] >= cold_of(c)->slide_min[lane] - d[lane];
     int bit = 1 << (2 * lane + (max_end ? 1 : 0));
     if ((c->ends_asked & bit) || !(c->ends_near & bit)) continue;
     c->ends_asked |= bit;
-    if (!tb_contact_face_runs_on(ctx->world, c->contact[lane], max_end)) continue;
+    if (!tb_contact_face_runs_on(ctx->world, cold_of(c)->contact[lane], max_end)) continue;
     if (max_end)
-      c->slide_max[lane] = FLT_MAX;
+      cold_of(c)->slide_max[lane] = FLT_MAX;
     else
-      c->slide_min[lane] = -FLT_MAX;
-    beyond[lane] = tb_maxf(c->slide_min[lane] - d[lane], d[lane] - c->slide_max[lane]);
+      cold_of(c)->slide_min[lane] = -FLT_MAX;
+    beyond[lane] = tb_maxf(cold_of(c)->slide_min[lane] - d[lane], d[lane] - cold_of(c)->slide_max[lane]);
   }
   return beyond;
 }
@@ -783,18 +803,19 @@ static __attribute__((noinline)) void set_slide_gaps(tb_wide_contact* c, const w
   tb_i4 off = beyond > splat(TB_SLIDE_TOLERANCE);
   c->slid_off = off[0] | off[1] | off[2] | off[3];
   for (int p = 0; p < 2; ++p) {
-    tb_wide_anchor* cp = &c->q[p];
+    tb_wide_anchor* cp = &cold_of(c)->q[p];
     tb_f4 moved = normal_motion(c, cp, A, B), s = moved + cp->collided_separation;
-    tb_f4 gap = max4(s + c->core_radius, splat(0.0f)), squared = beyond * beyond + gap * gap, ends;
+    tb_f4 gap = max4(s + cold_of(c)->core_radius, splat(0.0f)), squared = beyond * beyond + gap * gap, ends;
     for (int lane = 0; lane < 4; ++lane) ends[lane] = sqrtf(squared[lane]);
-    cp->base_separation = blend(off, (ends - c->core_radius) - moved, cp->collided_separation);
+    cp->base_separation = blend(off, (ends - cold_of(c)->core_radius) - moved, cp->collided_separation);
   }
 }
 
 static inline __attribute__((always_inline)) void measure_slide(tb_wide_contact* c, const tb_step_context* ctx,
                                                                 const wide_body* A, const wide_body* B) {
-  tb_f4 d = c->ny * (B->dpx - A->dpx) - c->nx * (B->dpy - A->dpy) - B->da * c->lever_b + A->da * c->lever_a;
-  tb_f4 beyond = max4(c->slide_min - d, d - c->slide_max);
+  tb_f4 d =
+      c->ny * (B->dpx - A->dpx) - c->nx * (B->dpy - A->dpy) - B->da * cold_of(c)->lever_b + A->da * cold_of(c)->lever_a;
+  tb_f4 beyond = max4(cold_of(c)->slide_min - d, d - cold_of(c)->slide_max);
   tb_i4 off = beyond > splat(TB_SLIDE_TOLERANCE);
   if (off[0] | off[1] | off[2] | off[3]) {
     beyond = ask_ends(c, ctx, d, beyond);
@@ -858,7 +879,7 @@ static inline __attribute__((always_inline)) void refresh_arms(tb_wide_contact* 
   tb_f4 moved = splat(0.0f);
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
-    const tb_wide_anchor* cq = &c->q[p];
+    const tb_wide_anchor* cq = &cold_of(c)->q[p];
     wide_arms arms = arms_now(c, cq, A, B);
     tb_f4 dx = arms.rax - cq->rax, dy = arms.ray - cq->ray, ex = arms.rbx - cq->rbx, ey = arms.rby - cq->rby;
     moved = max4(moved, max4(max4(max4(dx, -dx), max4(dy, -dy)), max4(max4(ex, -ex), max4(ey, -ey))));
@@ -915,7 +936,7 @@ static inline __attribute__((always_inline)) bool solve_isolated_direct(tb_wide_
    * it stays theirs (the same bits; solved here, the division in place of
    * the stored normal mass moved 40 bouncing balls' energy error from 4.2e-4
    * to 1.7e-3: their collisions are chaotic). */
-  tb_i4 two = c->q[1].live > zero, single = (c->q[0].live > zero) & ~two & (c->friction > zero);
+  tb_i4 two = cold_of(c)->q[1].live > zero, single = (cold_of(c)->q[0].live > zero) & ~two & (c->friction > zero);
   tb_f4 nx = c->nx, ny = c->ny, tx = ny, ty = -nx;
   tb_f4 m = c->ma + c->mb, ja = c->ja, jb = c->jb;
   tb_f4 rna1 = arms1->rax * ny - arms1->ray * nx, rnb1 = arms1->rbx * ny - arms1->rby * nx;
@@ -979,12 +1000,12 @@ static inline __attribute__((always_inline)) bool solve_isolated_direct(tb_wide_
   apply_impulse(c, arms1, dn1 * nx + dt1 * tx, dn1 * ny + dt1 * ty, A, B);
   apply_impulse(c, arms2, dn2 * nx + dt2 * tx, dn2 * ny + dt2 * ty, A, B);
   if (c->bouncy) { /* restitution's record of the normal impulses (see solve_wide) */
-    count_normal(&c->q[0], arms1, dn1);
-    count_normal(&c->q[1], arms2, dn2);
-    c->q[0].max_normal_impulse = max4(c->q[0].max_normal_impulse, p1->normal_impulse);
-    c->q[1].max_normal_impulse = max4(c->q[1].max_normal_impulse, p2->normal_impulse);
+    count_normal(&cold_of(c)->q[0], arms1, dn1);
+    count_normal(&cold_of(c)->q[1], arms2, dn2);
+    cold_of(c)->q[0].max_normal_impulse = max4(cold_of(c)->q[0].max_normal_impulse, p1->normal_impulse);
+    cold_of(c)->q[1].max_normal_impulse = max4(cold_of(c)->q[1].max_normal_impulse, p2->normal_impulse);
   }
-  tb_i4 rest = ~ok & (c->q[0].live > zero); /* lanes with a contact left to the rounds */
+  tb_i4 rest = ~ok & (cold_of(c)->q[0].live > zero); /* lanes with a contact left to the rounds */
   return !(rest[0] | rest[1] | rest[2] | rest[3]);
 }
 
@@ -1009,8 +1030,8 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
   wide_arms arms1 = stored_arms(p1), arms2 = stored_arms(p2);
   tb_f4 ms1, ms2;
   if (measure) measure_slide(c, ctx, &A, &B);
-  tb_f4 s1 = stored ? p1->separation : normal_motion(c, &c->q[0], &A, &B) + c->q[0].base_separation;
-  tb_f4 s2 = stored ? p2->separation : normal_motion(c, &c->q[1], &A, &B) + c->q[1].base_separation;
+  tb_f4 s1 = stored ? p1->separation : normal_motion(c, &cold_of(c)->q[0], &A, &B) + cold_of(c)->q[0].base_separation;
+  tb_f4 s2 = stored ? p2->separation : normal_motion(c, &cold_of(c)->q[1], &A, &B) + cold_of(c)->q[1].base_separation;
   if (measure) p1->separation = s1, p2->separation = s2;
   /* An isolated block's relax solve (lanes_isolated) repeats, up to
    * relax_iterations rounds, until no point's speed changes by more than
@@ -1053,15 +1074,15 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
     tb_f4 d1 = x1 - a1;
     apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
     if (c->bouncy) {
-      count_normal(&c->q[0], &arms1, d1);
-      c->q[0].max_normal_impulse = max4(c->q[0].max_normal_impulse, x1);
+      count_normal(&cold_of(c)->q[0], &arms1, d1);
+      cold_of(c)->q[0].max_normal_impulse = max4(cold_of(c)->q[0].max_normal_impulse, x1);
     }
     p2->normal_impulse = x2;
     tb_f4 d2 = x2 - a2;
     apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
     if (c->bouncy) {
-      count_normal(&c->q[1], &arms2, d2);
-      c->q[1].max_normal_impulse = max4(c->q[1].max_normal_impulse, x2);
+      count_normal(&cold_of(c)->q[1], &arms2, d2);
+      cold_of(c)->q[1].max_normal_impulse = max4(cold_of(c)->q[1].max_normal_impulse, x2);
     }
     /* the normal speed each point's change made (its own K_ii; the coupling
      * term is left out), for the relax passes' stop */
@@ -1072,11 +1093,11 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
      * order as the tangent one): the relax passes' record (relax_activity.h) */
     moved = max4(normal_change, max4(max4(f1, -f1) * c->k11, max4(f2, -f2) * c->k22));
     if (c->rolling) {
-      tb_f4 limit = c->rolling_resistance * (x1 + x2);
-      tb_f4 impulse = -c->rolling_mass * (B.w - A.w);
-      tb_f4 total = min4(max4(c->rolling_impulse + impulse, -limit), limit);
-      impulse = total - c->rolling_impulse;
-      c->rolling_impulse = total;
+      tb_f4 limit = cold_of(c)->rolling_resistance * (x1 + x2);
+      tb_f4 impulse = -cold_of(c)->rolling_mass * (B.w - A.w);
+      tb_f4 total = min4(max4(cold_of(c)->rolling_impulse + impulse, -limit), limit);
+      impulse = total - cold_of(c)->rolling_impulse;
+      cold_of(c)->rolling_impulse = total;
       A.w -= c->ja * impulse;
       B.w += c->jb * impulse;
     }
@@ -1159,6 +1180,8 @@ AVX2_INLINE void relative_velocity8(const wide_arms8* r, const wide_body8* A, co
 AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_context* ctx, bool use_bias, bool record,
                             tb_f8* change) {
 #define BOTH(field) join(c0->field, c1->field)
+#define COLD_BOTH(field) join(cold_of(c0)->field, cold_of(c1)->field)
+#define COLD_STORE(field, v) (cold_of(c0)->field = low_half(v), cold_of(c1)->field = high_half(v))
 #define STORE(field, v) (c0->field = low_half(v), c1->field = high_half(v))
   tb_solver_body* states = ctx->states;
   float inv_h = ctx->inv_h, push = ctx->contact_push_max_velocity;
@@ -1216,8 +1239,8 @@ AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_co
       tb_wide_contact* half[2] = {c0, c1};
       for (int h = 0; h < 2; ++h)
         if (half[h]->bouncy) {
-          count_normal(&half[h]->q[q], &now[h], step[h]);
-          half[h]->q[q].max_normal_impulse = max4(half[h]->q[q].max_normal_impulse, total[h]);
+          count_normal(&cold_of(half[h])->q[q], &now[h], step[h]);
+          cold_of(half[h])->q[q].max_normal_impulse = max4(cold_of(half[h])->q[q].max_normal_impulse, total[h]);
         }
     }
   }
@@ -1245,11 +1268,11 @@ AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_co
   if (c0->rolling | c1->rolling) { /* in the blocks that roll, as solve_wide */
     int32_t roll0 = c0->rolling ? -1 : 0, roll1 = c1->rolling ? -1 : 0;
     tb_i8 rolls = {roll0, roll0, roll0, roll0, roll1, roll1, roll1, roll1};
-    tb_f8 held = BOTH(rolling_impulse), limit = BOTH(rolling_resistance) * (x1 + x2);
-    tb_f8 impulse = -BOTH(rolling_mass) * (B.w - A.w);
+    tb_f8 held = COLD_BOTH(rolling_impulse), limit = COLD_BOTH(rolling_resistance) * (x1 + x2);
+    tb_f8 impulse = -COLD_BOTH(rolling_mass) * (B.w - A.w);
     tb_f8 total = min8(max8(held + impulse, -limit), limit);
     impulse = total - held;
-    STORE(rolling_impulse, blend8(rolls, total, held));
+    COLD_STORE(rolling_impulse, blend8(rolls, total, held));
     A.w = blend8(rolls, A.w - ja * impulse, A.w);
     B.w = blend8(rolls, B.w + jb * impulse, B.w);
   }
@@ -1257,6 +1280,8 @@ AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_co
   scatter8(states, c0->b, c1->b, &B);
 #undef BOTH
 #undef STORE
+#undef COLD_BOTH
+#undef COLD_STORE
 }
 
 /* warm_start_wide for blocks c0 and c1 of one colour */
@@ -1269,18 +1294,22 @@ static AVX2 void warm_start_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_so
     wide_arms8 arms = {join(p0->now_rax, p1->now_rax), join(p0->now_ray, p1->now_ray), join(p0->now_rbx, p1->now_rbx),
                        join(p0->now_rby, p1->now_rby)};
     if (c0->bouncy)
-      count_normal(&c0->q[q], &(wide_arms){p0->now_rax, p0->now_ray, p0->now_rbx, p0->now_rby}, p0->normal_impulse);
+      count_normal(&cold_of(c0)->q[q], &(wide_arms){p0->now_rax, p0->now_ray, p0->now_rbx, p0->now_rby},
+                   p0->normal_impulse);
     if (c1->bouncy)
-      count_normal(&c1->q[q], &(wide_arms){p1->now_rax, p1->now_ray, p1->now_rbx, p1->now_rby}, p1->normal_impulse);
+      count_normal(&cold_of(c1)->q[q], &(wide_arms){p1->now_rax, p1->now_ray, p1->now_rbx, p1->now_rby},
+                   p1->normal_impulse);
     tb_f8 normal = join(p0->normal_impulse, p1->normal_impulse),
           tangent = join(p0->tangent_impulse, p1->tangent_impulse);
     tb_f8 Px = normal * nx + tangent * tx;
     tb_f8 Py = normal * ny + tangent * ty;
     apply8(ma, ja, mb, jb, &arms, Px, Py, &A, &B);
   }
-  tb_f8 rolling = join(c0->rolling_impulse, c1->rolling_impulse);
-  A.w -= ja * rolling;
-  B.w += jb * rolling;
+  if (c0->rolling | c1->rolling) {
+    tb_f8 rolling = join(cold_of(c0)->rolling_impulse, cold_of(c1)->rolling_impulse);
+    A.w -= ja * rolling;
+    B.w += jb * rolling;
+  }
   scatter8(states, c0->a, c1->a, &A);
   scatter8(states, c0->b, c1->b, &B);
 }
@@ -1302,7 +1331,8 @@ AVX2_INLINE void separations_now(tb_wide_contact* c, const tb_step_context* ctx,
     refresh_arms(c, &A, &B);
     measure_slide(c, ctx, &A, &B);
   }
-  for (int q = 0; q < 2; ++q) c->p[q].separation = normal_motion(c, &c->q[q], &A, &B) + c->q[q].base_separation;
+  for (int q = 0; q < 2; ++q)
+    c->p[q].separation = normal_motion(c, &cold_of(c)->q[q], &A, &B) + cold_of(c)->q[q].base_separation;
 }
 
 /* One group's sweep, pairs eight lanes at a time. stored: the pass reads the
@@ -1387,11 +1417,11 @@ static void load_deep(tb_deep_block* d, const tb_wide_contact* wide) {
     d->n12[k] = c->n12[lane];
     d->n22[k] = c->n22[lane];
     for (int p = 0; p < 2; ++p) {
-      d->rax[p][k] = c->q[p].rax[lane];
-      d->ray[p][k] = c->q[p].ray[lane];
-      d->rbx[p][k] = c->q[p].rbx[lane];
-      d->rby[p][k] = c->q[p].rby[lane];
-      d->base_separation[p][k] = c->q[p].base_separation[lane];
+      d->rax[p][k] = cold_of(c)->q[p].rax[lane];
+      d->ray[p][k] = cold_of(c)->q[p].ray[lane];
+      d->rbx[p][k] = cold_of(c)->q[p].rbx[lane];
+      d->rby[p][k] = cold_of(c)->q[p].rby[lane];
+      d->base_separation[p][k] = cold_of(c)->q[p].base_separation[lane];
       d->push_depth[p][k] = c->p[p].push_depth[lane];
       d->normal_mass[p][k] = c->p[p].normal_mass[lane];
     }
@@ -1523,7 +1553,7 @@ void tb_contact_solver_reset(tb_world* w) {
   const tb_f4 zero = splat(0.0f);
   for (int b = 0; b < w->wide_count; ++b) {
     for (int p = 0; p < 2; ++p) wide[b].p[p].normal_impulse = wide[b].p[p].tangent_impulse = zero;
-    wide[b].rolling_impulse = zero;
+    cold_of(&wide[b])->rolling_impulse = zero;
   }
 }
 
@@ -1629,7 +1659,7 @@ static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact
   cc->bouncing = 0;
   for (int p = 0; p < cc->point_count; ++p) {
     const tb_wide_point* cp = &wc->p[p];
-    const tb_wide_anchor* cq = &wc->q[p];
+    const tb_wide_anchor* cq = &cold_of(wc)->q[p];
     if (cq->max_normal_impulse[lane] == 0.0f || !(cp->normal_mass[lane] > 0.0f)) continue;
     tb_vec2 ra0 = {cq->rax[lane], cq->ray[lane]}, rb0 = {cq->rbx[lane], cq->rby[lane]};
     float applied = cq->applied[lane];
@@ -1730,7 +1760,7 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
       c->manifold.points[p].normal_impulse = wc->p[p].normal_impulse[lane];
       c->manifold.points[p].tangent_impulse = wc->p[p].tangent_impulse[lane];
     }
-    c->rolling_impulse = wc->rolling_impulse[lane];
+    c->rolling_impulse = cold_of(wc)->rolling_impulse[lane];
   }
 }
 
@@ -1741,7 +1771,7 @@ size_t tb_contact_solver_bytes(const tb_world* w) {
          (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->degree_capacity +
          (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts +
          (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts +
-         (size_t)w->wide_capacity * sizeof(tb_wide_contact) + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
+         (size_t)w->wide_capacity * 2 * sizeof(tb_wide_contact) + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
          (size_t)w->push_capacity * sizeof *w->push_velocities;
 }
 
@@ -1751,7 +1781,7 @@ void tb_contact_solver_free(tb_world* w) {
   tb_mem_free(w->lane_contacts, (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts);
   tb_mem_free(w->laid_out_contacts, (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts);
   tb_mem_free(w->contact_degree, (size_t)w->degree_capacity);
-  tb_mem_free(w->wide, (size_t)w->wide_capacity * sizeof(tb_wide_contact));
+  tb_mem_free(w->wide, (size_t)w->wide_capacity * 2 * sizeof(tb_wide_contact));
   tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_block));
   tb_mem_free(w->push_velocities, (size_t)w->push_capacity * sizeof *w->push_velocities);
 }
