@@ -79,7 +79,8 @@ commit=$(git -C "$tree" rev-parse HEAD 2>/dev/null || echo unknown)
   echo "Counts at the end of the last run (bodies, shapes, joints; pairs = shape pairs whose fat boxes overlap;"
   echo "touching = tumble's contacts with manifold points; coloured = constraints in v3's graph colours; bytes = tumble's"
   echo "world memory (tb_world_get_memory_stats), body_bytes and contact_bytes its body and contact parts per body"
-  echo "and per contact, pairs counted as contacts):"
+  echo "and per contact, pairs counted as contacts; relax = tumble's relax passes per substep over the timed steps,"
+  echo "at most its relax_iterations, 8: v3 runs one):"
   echo
   echo '```'
   for s in "${scenes[@]}"; do grep -E "^(tumble|box2d_v3) $s " "$out/runs.txt" | tail -n 2 | cut -d' ' -f1,2,5-; done

@@ -9,9 +9,11 @@
  * SCENE pyramid_base_N (N in 1..100) is large_pyramid with a base of N boxes
  * (the small-pyramid scaling rows; sleeping off, 500 steps by default).
  * prints: tumble SCENE STEPS MS_PER_STEP bodies B shapes S joints J pairs P
- * touching T awake A bytes N body_bytes BB contact_bytes CB hash H (the world's
- * bytes, its body and contact parts per body and per contact, and the world
- * hash after the last step: equal hashes, equal results) */
+ * touching T awake A bytes N body_bytes BB contact_bytes CB relax R hash H (the
+ * world's bytes, its body and contact parts per body and per contact, the
+ * relax passes per substep over the timed steps (tb_profile.relax_pass_count;
+ * v3 runs one), and the world hash after the last step: equal hashes, equal
+ * results) */
 #define _POSIX_C_SOURCE 200809L
 #include <inttypes.h>
 #include <stdio.h>
@@ -62,6 +64,7 @@ int main(int argc, char** argv) {
     fprintf(stderr, "%s: step failed: %s\n", argv[0], tb_last_error());
     return 1;
   }
+  long relax_passes = 0; /* the profile's counts are kept with its clock off */
   double t0 = cpu_seconds();
   for (int i = 1; i < steps; ++i) {
     if (sc->update != NULL) sc->update(world, i);
@@ -69,6 +72,7 @@ int main(int argc, char** argv) {
       fprintf(stderr, "%s: step %d failed: %s\n", argv[0], i, tb_last_error());
       return 1;
     }
+    relax_passes += tb_world_get_profile(world).relax_pass_count;
   }
   double ms = 1e3 * (cpu_seconds() - t0) / (double)(steps - 1);
   tb_counts c = tb_world_get_counts(world);
@@ -81,10 +85,11 @@ int main(int argc, char** argv) {
   }
   printf(
       "tumble %s %d %.4f bodies %d shapes %d joints %d pairs %d touching %d awake %d bytes %zu"
-      " body_bytes %.0f contact_bytes %.0f hash %016" PRIx64 "\n",
+      " body_bytes %.0f contact_bytes %.0f relax %.2f hash %016" PRIx64 "\n",
       argv[1], steps, ms, c.body_count, c.shape_count, c.joint_count, c.contact_count, c.touching_count,
       c.awake_body_count, mem.total, c.body_count > 0 ? (double)mem.bodies / c.body_count : 0.0,
-      c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0, tb_world_hash(world));
+      c.contact_count > 0 ? (double)mem.contacts / c.contact_count : 0.0, (double)relax_passes / (4.0 * (steps - 1)),
+      tb_world_hash(world));
   tb_destroy_world(world);
   return 0;
 }
