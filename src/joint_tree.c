@@ -74,35 +74,49 @@
  * corrected as before (0.4 m/s at 2.5 mm). */
 #define TB_TREE_MAX_CORRECTION_SPEED tb_meters(4.0f)
 
-/* Laid out for the substitutions, which stream every node of a tree once per
- * pass (rain: 21,000 nodes, about 30 times a step): what both kinds read
- * first (a body node reads nothing past stiff), then a joint's rows, then
- * what only the build and the factorisation read. */
+/* The nodes are split by what reads them, because the substitutions stream
+ * every node of a tree once per pass (rain: 21,000 nodes, about 30 times a
+ * step) and their time follows the bytes they stream (472-byte nodes holding
+ * everything: 256 bytes of padding each made rain 1.10x slower). A node holds
+ * its place and its blocks of the factorisation; a joint's rows are in
+ * tree->joints (its slot, in node order); what only the build, the
+ * factorisation and the store read is in tree->cold (by node). */
 typedef struct tb_jt_node {
   int parent;                 /* node index, -1 for a root */
-  int dof;                    /* 3 for a body, the row count for a joint */
-  int ref;                    /* body: solver index; joint: joint index */
+  int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
+  int ref;                    /* body: solver index; joint: its slot in tree->joints */
+  int8_t dof;                 /* 3 for a body, the row count for a joint */
   bool body;                  /* a body node (else a joint's rows) */
   bool lone;                  /* of a tree of one joint, solved without D and H (solve_lone_joint) */
   bool two_rows;              /* of a tree whose joints all have two rows (substitute) */
-  int children, children_end; /* its children: nodes [children, children_end) (breadth-first: adjacent) */
+  double stiff;               /* body: the geometric stiffness added to its inertia */
   double y[3];                /* right-hand side, then the solution */
   double d[3][3];             /* D, then D^-1 */
   double dh[3][3];            /* D^-1 H_{i,parent}: dof x the parent's dof (the substitutions' only H) */
-  double stiff;               /* body: the geometric stiffness added to its inertia */
-  int sa, sb;                 /* joint: the solver bodies of A and B (the passes read them without the joint) */
-  /* joint: the rows' accumulated impulses (*rows.impulse[r]), kept here while
-   * the substep's passes add to them: the joint records are scattered, and
-   * reading them in every pass missed the cache. Loaded by the biased
+} tb_jt_node;
+
+/* A joint node's rows (tb_rigid_rows), what its right-hand side reads. */
+typedef struct tb_jt_joint {
+  int sa, sb; /* the solver bodies of A and B */
+  /* the rows' accumulated impulses (*impulse[r] of its tb_jt_cold), kept here
+   * while the substep's passes add to them: the joint records are scattered,
+   * and reading them in every pass missed the cache. Loaded by the biased
    * factorisation, written back by tb_joint_tree_store. */
   float acc[3];
-  double kc[3][3]; /* joint: K_c, the row block's own effective-mass inverse (G = g K_c) */
-  tb_rigid_rows rows;
-  float hp[3][3]; /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
-  int first;      /* body: its first edge in tree->edges */
-  int count;      /* body: its edge count */
-  int a, b;       /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
-} tb_jt_node;
+  float ja[3][3], jb[3][3];
+  float c[3];
+  int point;       /* the first of the point's two rows, -1 without a point */
+  double kc[3][3]; /* K_c, the row block's own effective-mass inverse (G = g K_c) */
+} tb_jt_joint;
+
+/* What only the build, the factorisation and the store read, by node. */
+typedef struct tb_jt_cold {
+  float hp[3][3];    /* H_{i,parent}: dof x the parent's dof (Jacobian entries, exact in float) */
+  int first, count;  /* body: its edges in tree->edges */
+  int a, b;          /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
+  int joint;         /* joint: its index */
+  float* impulse[3]; /* joint: where the rows' accumulated impulses live */
+} tb_jt_cold;
 
 /* A node's place in the graph, as the build finds it (before the nodes are
  * sorted): the fields of tb_jt_node that say so, in a record of 44 bytes
@@ -126,6 +140,8 @@ typedef struct tb_jt_key {
 
 void tb_joint_tree_free(tb_joint_tree* t) {
   tb_mem_free(t->nodes, (size_t)t->node_capacity * sizeof *t->nodes);
+  tb_mem_free(t->joints, (size_t)t->joint_capacity * sizeof *t->joints);
+  tb_mem_free(t->cold, (size_t)t->cold_capacity * sizeof *t->cold);
   tb_mem_free(t->order, (size_t)t->order_capacity * sizeof *t->order);
   tb_mem_free(t->links, (size_t)t->link_capacity * sizeof *t->links);
   tb_mem_free(t->place, (size_t)t->place_capacity * sizeof *t->place);
@@ -237,6 +253,8 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     return true;
   }
   if (!tb_array_reserve((void**)&t->nodes, &t->node_capacity, bodies + joints, sizeof *t->nodes) ||
+      !tb_array_reserve((void**)&t->joints, &t->joint_capacity, joints, sizeof *t->joints) ||
+      !tb_array_reserve((void**)&t->cold, &t->cold_capacity, bodies + joints, sizeof *t->cold) ||
       !tb_array_reserve((void**)&t->order, &t->order_capacity, bodies + joints, sizeof *t->order) ||
       !tb_array_reserve((void**)&t->links, &t->link_capacity, bodies + joints, sizeof *t->links) ||
       !tb_array_reserve((void**)&t->place, &t->place_capacity, bodies + joints, sizeof *t->place) ||
@@ -342,23 +360,32 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
    * rest the factorisation and the right-hand sides write before they read. */
   for (int q = 0; q < ordered; ++q) t->place[t->order[q]] = q;
   for (int e = 0; e < at; ++e) t->edges[e] = t->place[t->edges[e]];
+  int slots = 0;
   for (int q = 0; q < ordered; ++q) {
     int old = t->order[q];
     const tb_jt_link* l = &t->links[old];
     tb_jt_node* n = &t->nodes[q];
+    tb_jt_cold* cold = &t->cold[q];
     n->parent = l->parent >= 0 ? t->place[l->parent] : -1;
-    n->dof = l->dof;
-    n->ref = l->ref;
+    n->dof = (int8_t)l->dof;
     n->body = old < body_nodes;
     n->children = l->children;
     n->children_end = l->children_end;
+    n->stiff = 0.0;
     n->y[0] = n->y[1] = n->y[2] = 0.0;
-    n->first = l->first;
-    n->count = l->count;
-    n->sa = l->sa;
-    n->sb = l->sb;
-    n->a = !n->body && l->a >= 0 ? t->place[l->a] : -1;
-    n->b = !n->body && l->b >= 0 ? t->place[l->b] : -1;
+    cold->first = l->first;
+    cold->count = l->count;
+    cold->a = !n->body && l->a >= 0 ? t->place[l->a] : -1;
+    cold->b = !n->body && l->b >= 0 ? t->place[l->b] : -1;
+    cold->joint = n->body ? -1 : l->ref;
+    if (n->body) {
+      n->ref = l->ref;
+    } else {
+      n->ref = slots;
+      t->joints[slots].sa = l->sa;
+      t->joints[slots].sb = l->sb;
+      slots += 1;
+    }
   }
   for (int k = 0; k < t->component_count; ++k) {
     int from = t->components[k], to = t->components[k + 1], joints_in = 0;
@@ -423,11 +450,11 @@ static void invert(double m[3][3], int n) {
 
 /* A row block's Jacobian on one of its bodies, as a k x 3 block with the sign
  * of H: +ja on body A, -jb on body B (see the file comment). */
-static void joint_block(const tb_jt_node* joint, bool side_a, float out[3][3]) {
+static void joint_block(const tb_jt_joint* joint, bool side_a, float out[3][3]) {
   if (side_a)
-    memcpy(out, joint->rows.ja, sizeof joint->rows.ja);
+    memcpy(out, joint->ja, sizeof joint->ja);
   else
-    UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) out[r][c] = -joint->rows.jb[r][c];
+    UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) out[r][c] = -joint->jb[r][c];
 }
 
 /* The inverse mass of a solver body times a 3-vector (x, y, angle). */
@@ -459,12 +486,13 @@ static void inv_mass_times(const tb_solver_body* s, const float j[3], double out
 
 /* D_p -= H_ip^T D_i^-1 H_ip (D_i already inverted), keeping D_i^-1 H_ip for
  * the substitutions */
-static inline __attribute__((always_inline)) void eliminate(int nd, int pd, tb_jt_node* n, tb_jt_node* p) {
+static inline __attribute__((always_inline)) void eliminate(int nd, int pd, tb_jt_node* n, float hp[3][3],
+                                                            tb_jt_node* p) {
   double dh[3][3] = {{0.0}};
   UNROLLED for (int r = 0; r < nd; ++r) UNROLLED for (int c = 0; c < pd; ++c) UNROLLED for (int s = 0; s < nd; ++s)
-      dh[r][c] += n->d[r][s] * n->hp[s][c];
+      dh[r][c] += n->d[r][s] * hp[s][c];
   UNROLLED for (int c = 0; c < pd; ++c) UNROLLED for (int e = 0; e < pd; ++e) UNROLLED for (int r = 0; r < nd; ++r)
-      p->d[c][e] -= n->hp[r][c] * dh[r][e];
+      p->d[c][e] -= hp[r][c] * dh[r][e];
   memcpy(n->dh, dh, sizeof dh);
 }
 
@@ -489,16 +517,16 @@ static inline __attribute__((always_inline)) void back(int nd, int pd, tb_jt_nod
 /* ---- the solve -------------------------------------------------------------- */
 
 /* K_c of a joint's k rows (k a constant where inlined, joint_rows). */
-static inline __attribute__((always_inline)) void block_mass(int k, tb_jt_node* n, const tb_solver_body* a,
+static inline __attribute__((always_inline)) void block_mass(int k, tb_jt_joint* n, const tb_solver_body* a,
                                                              const tb_solver_body* b) {
   double ma[3][3], mb[3][3]; /* M^-1 J^T columns of each row */
   UNROLLED for (int r = 0; r < k; ++r) {
-    inv_mass_times(a, n->rows.ja[r], ma[r]);
-    inv_mass_times(b, n->rows.jb[r], mb[r]);
+    inv_mass_times(a, n->ja[r], ma[r]);
+    inv_mass_times(b, n->jb[r], mb[r]);
   }
   UNROLLED for (int r = 0; r < k; ++r) {
-    const float* ja = n->rows.ja[r];
-    const float* jb = n->rows.jb[r];
+    const float* ja = n->ja[r];
+    const float* jb = n->jb[r];
     UNROLLED for (int s = 0; s < k; ++s) {
       double kc = 0.0;
       UNROLLED for (int c = 0; c < 3; ++c) kc += ja[c] * ma[s][c] + jb[c] * mb[s][c];
@@ -511,34 +539,41 @@ static inline __attribute__((always_inline)) void block_mass(int k, tb_jt_node* 
  * depend on the positions only: computed by the first factorisation after a
  * position update (the relax one) and read again by the biased one of the
  * next substep. */
-static void joint_rows(tb_world* w, const tb_step_context* ctx, tb_jt_node* n) {
-  const tb_solver_body* a = &ctx->states[n->sa];
-  const tb_solver_body* b = &ctx->states[n->sb];
-  tb_joint_rigid_rows(tb_joint_at(w, n->ref), a, b, &n->rows);
+static void joint_rows(tb_world* w, const tb_step_context* ctx, const tb_jt_node* n, tb_jt_joint* j, tb_jt_cold* cold) {
+  const tb_solver_body* a = &ctx->states[j->sa];
+  const tb_solver_body* b = &ctx->states[j->sb];
+  tb_rigid_rows rows;
+  memset(&rows, 0, sizeof rows);
+  tb_joint_rigid_rows(tb_joint_at(w, cold->joint), a, b, &rows);
+  memcpy(j->ja, rows.ja, sizeof j->ja);
+  memcpy(j->jb, rows.jb, sizeof j->jb);
+  memcpy(j->c, rows.c, sizeof j->c);
+  memcpy(cold->impulse, rows.impulse, sizeof cold->impulse);
+  j->point = rows.point;
   switch (n->dof) {
-    case 1: block_mass(1, n, a, b); break;
-    case 2: block_mass(2, n, a, b); break;
-    default: block_mass(3, n, a, b); break;
+    case 1: block_mass(1, j, a, b); break;
+    case 2: block_mass(2, j, a, b); break;
+    default: block_mass(3, j, a, b); break;
   }
-  if (n->parent >= 0 && !n->lone) joint_block(n, n->a == n->parent, n->hp);
+  if (n->parent >= 0 && !n->lone) joint_block(j, cold->a == n->parent, cold->hp);
 }
 
 /* H of a body toward its parent joint: the transpose of the joint's block. */
-static void body_block(tb_jt_node* n, const tb_jt_node* joint, bool side_a) {
+static void body_block(float hp[3][3], const tb_jt_joint* joint, bool side_a) {
   float sign = side_a ? 1.0f : -1.0f;
-  const float(*j)[3] = side_a ? joint->rows.ja : joint->rows.jb;
-  UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) n->hp[r][c] = sign * j[c][r];
+  const float(*j)[3] = side_a ? joint->ja : joint->jb;
+  UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) hp[r][c] = sign * j[c][r];
 }
 
 /* h k of a joint's point rows on the side of body A or B (the file comment):
  * r . p, the arm r read back from the rows (the x row's arm is -r.y, the y
  * row's r.x), p the point's accumulated impulse (-p acts on A). */
-static double point_twist(const tb_jt_node* joint, bool side_a) {
-  int r = joint->rows.point;
+static double point_twist(const tb_jt_joint* joint, bool side_a) {
+  int r = joint->point;
   if (r < 0) return 0.0;
   tb_vec2 p = {joint->acc[r], joint->acc[r + 1]};
-  if (side_a) return -tb_dot((tb_vec2){joint->rows.ja[r + 1][2], -joint->rows.ja[r][2]}, p);
-  return tb_dot((tb_vec2){joint->rows.jb[r + 1][2], -joint->rows.jb[r][2]}, p);
+  if (side_a) return -tb_dot((tb_vec2){joint->ja[r + 1][2], -joint->ja[r][2]}, p);
+  return tb_dot((tb_vec2){joint->jb[r + 1][2], -joint->jb[r][2]}, p);
 }
 
 /* A body node's block of D, its mass and inertia, with the geometric
@@ -549,9 +584,10 @@ static void body_mass(const tb_joint_tree* t, const tb_step_context* ctx, tb_jt_
   n->stiff = 0.0;
   if (use_bias) {
     double twist = 0.0; /* h k (the rows' r . p) */
-    for (int e = 0; e < n->count; ++e) {
-      const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
-      twist += point_twist(joint, joint->a == i);
+    const tb_jt_cold* cold = &t->cold[i];
+    for (int e = 0; e < cold->count; ++e) {
+      int edge = t->edges[cold->first + e];
+      twist += point_twist(&t->joints[t->nodes[edge].ref], t->cold[edge].a == i);
     }
     n->stiff = tb_maxd((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0);
   }
@@ -561,10 +597,10 @@ static void body_mass(const tb_joint_tree* t, const tb_step_context* ctx, tb_jt_
 }
 
 /* A joint's block of D: -G = -g K_c. */
-static void joint_compliance(tb_jt_node* n, double g) {
+static void joint_compliance(tb_jt_node* n, const tb_jt_joint* j, double g) {
   memset(n->d, 0, sizeof n->d);
   for (int r = 0; r < n->dof; ++r)
-    for (int c = 0; c < n->dof; ++c) n->d[r][c] = -g * n->kc[r][c];
+    for (int c = 0; c < n->dof; ++c) n->d[r][c] = -g * j->kc[r][c];
 }
 
 /* What a factorisation reads besides the bodies' masses, for every tree: the
@@ -583,17 +619,19 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
     /* the joint records lie all over memory: ask eight nodes ahead (they
      * waited on the first read of each, 2.5% of rain's step) */
     if ((fresh || use_bias) && i + 8 < t->node_count && !t->nodes[i + 8].body) {
-      const char* r = (const char*)tb_joint_at(w, t->nodes[i + 8].ref);
+      const char* r = (const char*)tb_joint_at(w, t->cold[i + 8].joint);
       for (size_t line = 0; line < sizeof(tb_joint); line += 64) __builtin_prefetch(r + line);
     }
     if (n->body) {
-      if (fresh && n->parent >= 0 && !n->lone) body_block(n, &t->nodes[n->parent], t->nodes[n->parent].a == i);
+      if (fresh && n->parent >= 0 && !n->lone)
+        body_block(t->cold[i].hp, &t->joints[t->nodes[n->parent].ref], t->cold[n->parent].a == i);
       continue;
     }
-    if (fresh) joint_rows(w, ctx, n);
+    tb_jt_joint* j = &t->joints[n->ref];
+    if (fresh) joint_rows(w, ctx, n, j, &t->cold[i]);
     if (use_bias)
-      for (int r = 0; r < n->dof; ++r) n->acc[r] = *n->rows.impulse[r];
-    if (!n->lone) joint_compliance(n, g);
+      for (int r = 0; r < n->dof; ++r) j->acc[r] = *t->cold[i].impulse[r];
+    if (!n->lone) joint_compliance(n, j, g);
   }
 }
 
@@ -604,12 +642,12 @@ static void prepare_lone(tb_joint_tree* t, int from, int to) {
     tb_jt_node* n = &t->nodes[q];
     if (n->parent < 0) continue;
     if (n->body)
-      body_block(n, &t->nodes[n->parent], t->nodes[n->parent].a == q);
+      body_block(t->cold[q].hp, &t->joints[t->nodes[n->parent].ref], t->cold[n->parent].a == q);
     else
-      joint_block(n, n->a == n->parent, n->hp);
+      joint_block(&t->joints[n->ref], t->cold[q].a == n->parent, t->cold[q].hp);
   }
   for (int q = from; q < to; ++q)
-    if (!t->nodes[q].body) joint_compliance(&t->nodes[q], t->compliance);
+    if (!t->nodes[q].body) joint_compliance(&t->nodes[q], &t->joints[t->nodes[q].ref], t->compliance);
 }
 
 /* The factorisation of the tree of nodes [from, to) at the current positions
@@ -624,7 +662,7 @@ static void factor(tb_joint_tree* t, const tb_step_context* ctx, int from, int t
     if (n->body) body_mass(t, ctx, n, q, use_bias);
     for (int c = n->children_end - 1; c >= n->children; --c) {
       tb_jt_node* child = &t->nodes[c];
-      BY_SHAPE(child->dof, n->dof, eliminate, child, n);
+      BY_SHAPE(child->dof, n->dof, eliminate, child, t->cold[c].hp, n);
     }
     invert(n->d, n->dof);
   }
@@ -635,20 +673,21 @@ static void factor(tb_joint_tree* t, const tb_step_context* ctx, int from, int t
  * (biased false) has no correction term. */
 static inline __attribute__((always_inline)) void joint_rhs(int k, bool biased, const tb_joint_tree* t,
                                                             const tb_step_context* ctx, tb_jt_node* n, double bias) {
-  const tb_solver_body* a = &ctx->states[n->sa];
-  const tb_solver_body* b = &ctx->states[n->sb];
+  const tb_jt_joint* j = &t->joints[n->ref];
+  const tb_solver_body* a = &ctx->states[j->sa];
+  const tb_solver_body* b = &ctx->states[j->sb];
   double avx = a->v.x, avy = a->v.y, aw = a->w, bvx = b->v.x, bvy = b->v.y, bw = b->w;
   double acc[3];
-  UNROLLED for (int s = 0; s < k; ++s) acc[s] = n->acc[s];
+  UNROLLED for (int s = 0; s < k; ++s) acc[s] = j->acc[s];
   UNROLLED for (int r = 0; r < k; ++r) {
-    const float* ja = n->rows.ja[r];
-    const float* jb = n->rows.jb[r];
+    const float* ja = j->ja[r];
+    const float* jb = j->jb[r];
     double cdot = (double)jb[0] * bvx + (double)jb[1] * bvy + (double)jb[2] * bw -
                   ((double)ja[0] * avx + (double)ja[1] * avy + (double)ja[2] * aw);
     double held = 0.0; /* (K_c l_acc)_r */
-    UNROLLED for (int s = 0; s < k; ++s) held += n->kc[r][s] * acc[s];
+    UNROLLED for (int s = 0; s < k; ++s) held += j->kc[r][s] * acc[s];
     if (biased) {
-      double correction = bias * (double)n->rows.c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
+      double correction = bias * (double)j->c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
       cdot += correction > most ? most : correction < -most ? -most : correction;
     }
     n->y[r] = cdot + t->compliance * held;
@@ -662,11 +701,13 @@ static inline __attribute__((always_inline)) void body_rhs(const tb_joint_tree* 
   if (n->stiff == 0.0) return;
   /* the warm start turned the body by I^-1 tau with the plain inertia */
   double torque = 0.0;
-  for (int e = 0; e < n->count; ++e) {
-    const tb_jt_node* joint = &t->nodes[t->edges[n->first + e]];
-    bool side_a = joint->a == i;
-    for (int r = 0; r < joint->dof; ++r)
-      torque += side_a ? -(double)joint->rows.ja[r][2] * joint->acc[r] : (double)joint->rows.jb[r][2] * joint->acc[r];
+  const tb_jt_cold* cold = &t->cold[i];
+  for (int e = 0; e < cold->count; ++e) {
+    int edge = t->edges[cold->first + e];
+    const tb_jt_joint* joint = &t->joints[t->nodes[edge].ref];
+    bool side_a = t->cold[edge].a == i;
+    for (int r = 0; r < t->nodes[edge].dof; ++r)
+      torque += side_a ? -(double)joint->ja[r][2] * joint->acc[r] : (double)joint->jb[r][2] * joint->acc[r];
   }
   n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
 }
@@ -734,10 +775,11 @@ static inline __attribute__((always_inline)) void substitute_kind(tb_world* w, t
     else
       back(2, 3, n, p);
     if (!n->body) {
+      float* acc = t->joints[n->ref].acc;
       if (two_rows)
-        UNROLLED for (int r = 0; r < 2; ++r) n->acc[r] += (float)n->y[r];
+        UNROLLED for (int r = 0; r < 2; ++r) acc[r] += (float)n->y[r];
       else
-        for (int r = 0; r < n->dof; ++r) n->acc[r] += (float)n->y[r];
+        for (int r = 0; r < n->dof; ++r) acc[r] += (float)n->y[r];
       continue;
     }
     tb_solver_body* s = &ctx->states[n->ref];
@@ -768,20 +810,23 @@ static void substitute(tb_world* w, tb_step_context* ctx, int from, int to, bool
  * nothing done, when a body needs the geometric stiffness (the general
  * factorisation has it). */
 static inline __attribute__((always_inline)) bool solve_lone_kind(int k, tb_joint_tree* t, tb_step_context* ctx,
-                                                                  int from, int to, tb_jt_node* n, bool use_bias) {
-  tb_solver_body* a = &ctx->states[n->sa];
-  tb_solver_body* b = &ctx->states[n->sb];
+                                                                  int from, int to, int q, bool use_bias) {
+  tb_jt_node* n = &t->nodes[q];
+  tb_jt_joint* j = &t->joints[n->ref];
+  const tb_jt_cold* cold = &t->cold[q];
+  tb_solver_body* a = &ctx->states[j->sa];
+  tb_solver_body* b = &ctx->states[j->sb];
   if (use_bias) {
     double h = (double)ctx->h;
-    if ((n->a >= 0 && h * point_twist(n, true) > 1.0 / (double)a->inv_inertia) ||
-        (n->b >= 0 && h * point_twist(n, false) > 1.0 / (double)b->inv_inertia)) {
+    if ((cold->a >= 0 && h * point_twist(j, true) > 1.0 / (double)a->inv_inertia) ||
+        (cold->b >= 0 && h * point_twist(j, false) > 1.0 / (double)b->inv_inertia)) {
       prepare_lone(t, from, to);
       return false;
     }
   }
   double s[3][3] = {{0.0}};
   UNROLLED for (int r = 0; r < k; ++r) UNROLLED for (int c = 0; c < k; ++c) s[r][c] =
-      n->kc[r][c] + t->compliance * n->kc[r][c];
+      j->kc[r][c] + t->compliance * j->kc[r][c];
   invert_n(k, s);
   double bias = use_bias ? (double)t->softness.bias_rate : 0.0;
   if (bias != 0.0) /* (a zero bias rate: the relax kind) */
@@ -791,23 +836,23 @@ static inline __attribute__((always_inline)) bool solve_lone_kind(int k, tb_join
   double dl[3] = {0.0, 0.0, 0.0};
   UNROLLED for (int r = 0; r < k; ++r) {
     UNROLLED for (int c = 0; c < k; ++c) dl[r] -= s[r][c] * n->y[c];
-    n->acc[r] += (float)dl[r];
+    j->acc[r] += (float)dl[r];
   }
   /* M^-1 J^T dl: -ja on A, +jb on B */
   for (int side = 0; side < 2; ++side) {
-    if ((side == 0 ? n->a : n->b) < 0) continue; /* static or kinematic: not a node */
+    if ((side == 0 ? cold->a : cold->b) < 0) continue; /* static or kinematic: not a node */
     tb_solver_body* body = side == 0 ? a : b;
     double p[3] = {0.0, 0.0, 0.0};
     UNROLLED for (int r = 0; r < k; ++r) {
-      const float* j = side == 0 ? n->rows.ja[r] : n->rows.jb[r];
+      const float* row = side == 0 ? j->ja[r] : j->jb[r];
       double l = side == 0 ? -dl[r] : dl[r];
-      UNROLLED for (int c = 0; c < 3; ++c) p[c] += (double)j[c] * l;
+      UNROLLED for (int c = 0; c < 3; ++c) p[c] += (double)row[c] * l;
     }
     tb_vec2 dv = {(float)((double)body->inv_mass * p[0]), (float)((double)body->inv_mass * p[1])};
     float dw = (float)((double)body->inv_inertia * p[2]);
     body->v = (tb_vec2){body->v.x + dv.x, body->v.y + dv.y};
     body->w += dw;
-    int index = side == 0 ? n->sa : n->sb;
+    int index = side == 0 ? j->sa : j->sb;
     if (!use_bias && ctx->relax_record) tb_relax_note(ctx, index, tb_relax_speed(ctx, index, dv, dw));
   }
   return true;
@@ -816,11 +861,10 @@ static inline __attribute__((always_inline)) bool solve_lone_kind(int k, tb_join
 static bool solve_lone_joint(tb_joint_tree* t, tb_step_context* ctx, int from, int to, bool use_bias) {
   int joint = from;
   while (t->nodes[joint].body) ++joint;
-  tb_jt_node* n = &t->nodes[joint];
-  switch (n->dof) { /* the row count as a constant: the small loops unrolled, the same operations */
-    case 1: return solve_lone_kind(1, t, ctx, from, to, n, use_bias);
-    case 2: return solve_lone_kind(2, t, ctx, from, to, n, use_bias);
-    default: return solve_lone_kind(3, t, ctx, from, to, n, use_bias);
+  switch (t->nodes[joint].dof) { /* the row count as a constant: the small loops unrolled, the same operations */
+    case 1: return solve_lone_kind(1, t, ctx, from, to, joint, use_bias);
+    case 2: return solve_lone_kind(2, t, ctx, from, to, joint, use_bias);
+    default: return solve_lone_kind(3, t, ctx, from, to, joint, use_bias);
   }
 }
 
@@ -846,12 +890,13 @@ void tb_joint_tree_store(tb_world* w) {
   for (int i = 0; i < t->node_count; ++i) {
     const tb_jt_node* n = &t->nodes[i];
     if (!n->body)
-      for (int r = 0; r < n->dof; ++r) *n->rows.impulse[r] = n->acc[r];
+      for (int r = 0; r < n->dof; ++r) *t->cold[i].impulse[r] = t->joints[n->ref].acc[r];
   }
 }
 
 size_t tb_joint_tree_bytes(const tb_joint_tree* t) {
-  return (size_t)t->node_capacity * sizeof *t->nodes + (size_t)t->order_capacity * sizeof *t->order +
+  return (size_t)t->node_capacity * sizeof *t->nodes + (size_t)t->joint_capacity * sizeof *t->joints +
+         (size_t)t->cold_capacity * sizeof *t->cold + (size_t)t->order_capacity * sizeof *t->order +
          (size_t)t->link_capacity * sizeof *t->links + (size_t)t->place_capacity * sizeof *t->place +
          (size_t)t->body_capacity * sizeof *t->body_scratch + (size_t)t->edge_capacity * sizeof *t->edges +
          (size_t)t->component_capacity * sizeof *t->components + (size_t)t->key_capacity * sizeof *t->keys;

@@ -10,6 +10,8 @@
 #include "solver.h"
 
 struct tb_jt_node;
+struct tb_jt_joint;
+struct tb_jt_cold;
 struct tb_jt_link;
 struct tb_jt_key;
 
@@ -17,6 +19,10 @@ struct tb_jt_key;
 typedef struct tb_joint_tree {
   struct tb_jt_node* nodes;
   int node_count, node_capacity;
+  struct tb_jt_joint* joints; /* the joint nodes' rows, by slot (node order) */
+  int joint_capacity;
+  struct tb_jt_cold* cold; /* by node: what the substitutions do not read */
+  int cold_capacity;
   struct tb_jt_link* links; /* the build's: the nodes' places in the graph, before they are sorted */
   int link_capacity;
   int* order; /* the build's breadth-first order, parents before children; the nodes are then stored in it */
