@@ -614,11 +614,17 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
   bool fresh = t->rows_for != ctx->position_updates;
   t->rows_for = ctx->position_updates;
   t->compliance = g;
+  /* The rows' impulses come from the joint records in a step's first biased
+   * solve (warm started, or scaled or zeroed by the joints' prepare) and in
+   * every biased solve without warm starting (zeroed each substep). After
+   * the first, acc holds what tb_joint_tree_store wrote, unchanged since (the
+   * warm starts only read it): the biased prepare then needs no joint record. */
+  bool reload = use_bias && (ctx->position_updates == 0 || !ctx->enable_warm_starting);
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
     /* the joint records lie all over memory: ask eight nodes ahead (they
      * waited on the first read of each, 2.5% of rain's step) */
-    if ((fresh || use_bias) && i + 8 < t->node_count && !t->nodes[i + 8].body) {
+    if ((fresh || reload) && i + 8 < t->node_count && !t->nodes[i + 8].body) {
       const char* r = (const char*)tb_joint_at(w, t->cold[i + 8].joint);
       for (size_t line = 0; line < sizeof(tb_joint); line += 64) __builtin_prefetch(r + line);
     }
@@ -629,7 +635,7 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
     }
     tb_jt_joint* j = &t->joints[n->ref];
     if (fresh) joint_rows(w, ctx, n, j, &t->cold[i]);
-    if (use_bias)
+    if (reload)
       for (int r = 0; r < n->dof; ++r) j->acc[r] = *t->cold[i].impulse[r];
     if (!n->lone) joint_compliance(n, j, g);
   }
