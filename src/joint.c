@@ -484,23 +484,25 @@ int tb_joint_rigid_row_count(const tb_joint* j) {
   return 0;
 }
 
-static void set_row(tb_rigid_rows* out, tb_vec2 n, float arm_a, float arm_b, float c, float* impulse) {
+static void set_row(tb_rigid_rows* out, float** impulses, tb_vec2 n, float arm_a, float arm_b, float c,
+                    float* impulse) {
   int r = out->count++;
   out->ja[r][0] = out->jb[r][0] = n.x;
   out->ja[r][1] = out->jb[r][1] = n.y;
   out->ja[r][2] = arm_a;
   out->jb[r][2] = arm_b;
   out->c[r] = c;
-  out->impulse[r] = impulse;
+  impulses[r] = impulse;
 }
 
-static void set_point_rows(tb_rigid_rows* out, const frame* f, tb_vec2* impulse) {
+static void set_point_rows(tb_rigid_rows* out, float** impulses, const frame* f, tb_vec2* impulse) {
   out->point = out->count;
-  set_row(out, (tb_vec2){1.0f, 0.0f}, -f->ra.y, -f->rb.y, f->d.x, &impulse->x);
-  set_row(out, (tb_vec2){0.0f, 1.0f}, f->ra.x, f->rb.x, f->d.y, &impulse->y);
+  set_row(out, impulses, (tb_vec2){1.0f, 0.0f}, -f->ra.y, -f->rb.y, f->d.x, &impulse->x);
+  set_row(out, impulses, (tb_vec2){0.0f, 1.0f}, f->ra.x, f->rb.x, f->d.y, &impulse->y);
 }
 
-void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out) {
+void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out,
+                         float* impulse[3]) {
   out->count = 0;
   out->point = -1;
   frame f = current_frame(j, a, b);
@@ -509,20 +511,21 @@ void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_b
     case TB_JOINT_DISTANCE: {
       float len = tb_length(f.d);
       tb_vec2 u = tb_normalize(f.d);
-      if (!j->enable_spring) set_row(out, u, tb_cross(f.ra, u), tb_cross(f.rb, u), len - j->length, &j->axial_impulse);
+      if (!j->enable_spring)
+        set_row(out, impulse, u, tb_cross(f.ra, u), tb_cross(f.rb, u), len - j->length, &j->axial_impulse);
       break;
     }
-    case TB_JOINT_REVOLUTE: set_point_rows(out, &f, &j->linear_impulse); break;
+    case TB_JOINT_REVOLUTE: set_point_rows(out, impulse, &f, &j->linear_impulse); break;
     case TB_JOINT_PRISMATIC:
     case TB_JOINT_WHEEL: {
       tb_vec2 p = tb_left_perp(tb_rotate(a->dq, j->axis));
-      set_row(out, p, tb_cross(tb_add(f.d, f.ra), p), tb_cross(f.rb, p), tb_dot(p, f.d), &j->axial_impulse);
-      if (j->type == TB_JOINT_PRISMATIC) set_row(out, zero, 1.0f, 1.0f, f.angle, &j->angular_impulse);
+      set_row(out, impulse, p, tb_cross(tb_add(f.d, f.ra), p), tb_cross(f.rb, p), tb_dot(p, f.d), &j->axial_impulse);
+      if (j->type == TB_JOINT_PRISMATIC) set_row(out, impulse, zero, 1.0f, 1.0f, f.angle, &j->angular_impulse);
       break;
     }
     case TB_JOINT_WELD:
-      if (j->angular_hertz == 0.0f) set_row(out, zero, 1.0f, 1.0f, f.angle, &j->angular_impulse);
-      if (j->hertz == 0.0f) set_point_rows(out, &f, &j->linear_impulse);
+      if (j->angular_hertz == 0.0f) set_row(out, impulse, zero, 1.0f, 1.0f, f.angle, &j->angular_impulse);
+      if (j->hertz == 0.0f) set_point_rows(out, impulse, &f, &j->linear_impulse);
       break;
     case TB_JOINT_MOUSE:
     case TB_JOINT_MOTOR: break;

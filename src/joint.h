@@ -89,17 +89,18 @@ void tb_joint_solve(struct tb_world* w, int joint, tb_step_context* ctx, bool us
 /* The rigid rows of a joint (the parts the world's joint softness holds, at
  * most three), for the exact solve of joint trees (joint_tree.c). Row r has
  * velocity Cdot_r = jb[r] . (vB, wB) - ja[r] . (vA, wA) and position error c[r];
- * its accumulated impulse is *impulse[r] (applied as +jb on B, -ja on A). */
+ * its accumulated impulse is *impulse[r] of tb_joint_rigid_rows (applied as
+ * +jb on B, -ja on A; apart, because the tree's passes never read them). */
 typedef struct tb_rigid_rows {
   int count;
+  int point; /* the first of the point's two rows (x, then y), -1 without a point */
   float ja[3][3], jb[3][3];
   float c[3];
-  float* impulse[3];
-  int point; /* the first of the point's two rows (x, then y), -1 without a point */
 } tb_rigid_rows;
 /* How many rigid rows the joint has (0: none, e.g. a mouse or motor joint). */
 int tb_joint_rigid_row_count(const tb_joint* j);
-void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out);
+void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out,
+                         float* impulse[3]);
 void tb_joint_store(struct tb_world* w, int joint, const tb_step_context* ctx);
 /* A revolute joint with nothing but its point: no spring, motor or limit
  * (its other impulses are zero, tb_joint_prepare). */

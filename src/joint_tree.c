@@ -95,7 +95,7 @@ typedef struct tb_jt_node {
   double dh[3][3];            /* D^-1 H_{i,parent}: dof x the parent's dof (the substitutions' only H) */
 } tb_jt_node;
 
-/* A joint node's rows (tb_rigid_rows), what its right-hand side reads. */
+/* A joint node's rows, what its right-hand side reads. */
 typedef struct tb_jt_joint {
   int sa, sb; /* the solver bodies of A and B */
   /* the rows' accumulated impulses (*impulse[r] of its tb_jt_cold), kept here
@@ -103,9 +103,7 @@ typedef struct tb_jt_joint {
    * and reading them in every pass missed the cache. Loaded by the biased
    * factorisation, written back by tb_joint_tree_store. */
   float acc[3];
-  float ja[3][3], jb[3][3];
-  float c[3];
-  int point;       /* the first of the point's two rows, -1 without a point */
+  tb_rigid_rows rows;
   double kc[3][3]; /* K_c, the row block's own effective-mass inverse (G = g K_c) */
 } tb_jt_joint;
 
@@ -452,9 +450,9 @@ static void invert(double m[3][3], int n) {
  * of H: +ja on body A, -jb on body B (see the file comment). */
 static void joint_block(const tb_jt_joint* joint, bool side_a, float out[3][3]) {
   if (side_a)
-    memcpy(out, joint->ja, sizeof joint->ja);
+    memcpy(out, joint->rows.ja, sizeof joint->rows.ja);
   else
-    UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) out[r][c] = -joint->jb[r][c];
+    UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) out[r][c] = -joint->rows.jb[r][c];
 }
 
 /* The inverse mass of a solver body times a 3-vector (x, y, angle). */
@@ -521,12 +519,12 @@ static inline __attribute__((always_inline)) void block_mass(int k, tb_jt_joint*
                                                              const tb_solver_body* b) {
   double ma[3][3], mb[3][3]; /* M^-1 J^T columns of each row */
   UNROLLED for (int r = 0; r < k; ++r) {
-    inv_mass_times(a, n->ja[r], ma[r]);
-    inv_mass_times(b, n->jb[r], mb[r]);
+    inv_mass_times(a, n->rows.ja[r], ma[r]);
+    inv_mass_times(b, n->rows.jb[r], mb[r]);
   }
   UNROLLED for (int r = 0; r < k; ++r) {
-    const float* ja = n->ja[r];
-    const float* jb = n->jb[r];
+    const float* ja = n->rows.ja[r];
+    const float* jb = n->rows.jb[r];
     UNROLLED for (int s = 0; s < k; ++s) {
       double kc = 0.0;
       UNROLLED for (int c = 0; c < 3; ++c) kc += ja[c] * ma[s][c] + jb[c] * mb[s][c];
@@ -542,14 +540,7 @@ static inline __attribute__((always_inline)) void block_mass(int k, tb_jt_joint*
 static void joint_rows(tb_world* w, const tb_step_context* ctx, const tb_jt_node* n, tb_jt_joint* j, tb_jt_cold* cold) {
   const tb_solver_body* a = &ctx->states[j->sa];
   const tb_solver_body* b = &ctx->states[j->sb];
-  tb_rigid_rows rows;
-  memset(&rows, 0, sizeof rows);
-  tb_joint_rigid_rows(tb_joint_at(w, cold->joint), a, b, &rows);
-  memcpy(j->ja, rows.ja, sizeof j->ja);
-  memcpy(j->jb, rows.jb, sizeof j->jb);
-  memcpy(j->c, rows.c, sizeof j->c);
-  memcpy(cold->impulse, rows.impulse, sizeof cold->impulse);
-  j->point = rows.point;
+  tb_joint_rigid_rows(tb_joint_at(w, cold->joint), a, b, &j->rows, cold->impulse);
   switch (n->dof) {
     case 1: block_mass(1, j, a, b); break;
     case 2: block_mass(2, j, a, b); break;
@@ -561,7 +552,7 @@ static void joint_rows(tb_world* w, const tb_step_context* ctx, const tb_jt_node
 /* H of a body toward its parent joint: the transpose of the joint's block. */
 static void body_block(float hp[3][3], const tb_jt_joint* joint, bool side_a) {
   float sign = side_a ? 1.0f : -1.0f;
-  const float(*j)[3] = side_a ? joint->ja : joint->jb;
+  const float(*j)[3] = side_a ? joint->rows.ja : joint->rows.jb;
   UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 3; ++c) hp[r][c] = sign * j[c][r];
 }
 
@@ -569,11 +560,11 @@ static void body_block(float hp[3][3], const tb_jt_joint* joint, bool side_a) {
  * r . p, the arm r read back from the rows (the x row's arm is -r.y, the y
  * row's r.x), p the point's accumulated impulse (-p acts on A). */
 static double point_twist(const tb_jt_joint* joint, bool side_a) {
-  int r = joint->point;
+  int r = joint->rows.point;
   if (r < 0) return 0.0;
   tb_vec2 p = {joint->acc[r], joint->acc[r + 1]};
-  if (side_a) return -tb_dot((tb_vec2){joint->ja[r + 1][2], -joint->ja[r][2]}, p);
-  return tb_dot((tb_vec2){joint->jb[r + 1][2], -joint->jb[r][2]}, p);
+  if (side_a) return -tb_dot((tb_vec2){joint->rows.ja[r + 1][2], -joint->rows.ja[r][2]}, p);
+  return tb_dot((tb_vec2){joint->rows.jb[r + 1][2], -joint->rows.jb[r][2]}, p);
 }
 
 /* A body node's block of D, its mass and inertia, with the geometric
@@ -686,14 +677,14 @@ static inline __attribute__((always_inline)) void joint_rhs(int k, bool biased, 
   double acc[3];
   UNROLLED for (int s = 0; s < k; ++s) acc[s] = j->acc[s];
   UNROLLED for (int r = 0; r < k; ++r) {
-    const float* ja = j->ja[r];
-    const float* jb = j->jb[r];
+    const float* ja = j->rows.ja[r];
+    const float* jb = j->rows.jb[r];
     double cdot = (double)jb[0] * bvx + (double)jb[1] * bvy + (double)jb[2] * bw -
                   ((double)ja[0] * avx + (double)ja[1] * avy + (double)ja[2] * aw);
     double held = 0.0; /* (K_c l_acc)_r */
     UNROLLED for (int s = 0; s < k; ++s) held += j->kc[r][s] * acc[s];
     if (biased) {
-      double correction = bias * (double)j->c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
+      double correction = bias * (double)j->rows.c[r], most = (double)TB_TREE_MAX_CORRECTION_SPEED;
       cdot += correction > most ? most : correction < -most ? -most : correction;
     }
     n->y[r] = cdot + t->compliance * held;
@@ -713,7 +704,7 @@ static inline __attribute__((always_inline)) void body_rhs(const tb_joint_tree* 
     const tb_jt_joint* joint = &t->joints[t->nodes[edge].ref];
     bool side_a = t->cold[edge].a == i;
     for (int r = 0; r < t->nodes[edge].dof; ++r)
-      torque += side_a ? -(double)joint->ja[r][2] * joint->acc[r] : (double)joint->jb[r][2] * joint->acc[r];
+      torque += side_a ? -(double)joint->rows.ja[r][2] * joint->acc[r] : (double)joint->rows.jb[r][2] * joint->acc[r];
   }
   n->y[2] = -n->stiff * (double)ctx->states[n->ref].inv_inertia * torque;
 }
@@ -850,7 +841,7 @@ static inline __attribute__((always_inline)) bool solve_lone_kind(int k, tb_join
     tb_solver_body* body = side == 0 ? a : b;
     double p[3] = {0.0, 0.0, 0.0};
     UNROLLED for (int r = 0; r < k; ++r) {
-      const float* row = side == 0 ? j->ja[r] : j->jb[r];
+      const float* row = side == 0 ? j->rows.ja[r] : j->rows.jb[r];
       double l = side == 0 ? -dl[r] : dl[r];
       UNROLLED for (int c = 0; c < 3; ++c) p[c] += (double)row[c] * l;
     }
