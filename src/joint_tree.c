@@ -99,9 +99,9 @@ typedef struct tb_jt_node {
 typedef struct tb_jt_joint {
   int sa, sb; /* the solver bodies of A and B */
   /* the rows' accumulated impulses (*impulse[r] of its tb_jt_cold), kept here
-   * while the substep's passes add to them: the joint records are scattered,
-   * and reading them in every pass missed the cache. Loaded by the biased
-   * factorisation, written back by tb_joint_tree_store. */
+   * while the passes add to them: the joint records are scattered, and
+   * reading them in every pass missed the cache. Loaded by a step's first
+   * biased prepare (see prepare), written back by tb_joint_tree_store. */
   float acc[3];
   tb_rigid_rows rows;
   double kc[3][3]; /* K_c, the row block's own effective-mass inverse (G = g K_c) */
@@ -117,8 +117,8 @@ typedef struct tb_jt_cold {
 } tb_jt_cold;
 
 /* A node's place in the graph, as the build finds it (before the nodes are
- * sorted): the fields of tb_jt_node that say so, in a record of 44 bytes
- * instead of 400, which the build searches and then writes out in order. */
+ * sorted): the fields of the node records that say so, in one record of 44
+ * bytes, which the build searches and then writes out in order. */
 typedef struct tb_jt_link {
   int parent, dof, ref;
   int a, b, sa, sb;           /* joint */
