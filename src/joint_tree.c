@@ -89,6 +89,7 @@ typedef struct tb_jt_node {
   bool body;                  /* a body node (else a joint's rows) */
   bool lone;                  /* of a tree of one joint, solved without D and H (solve_lone_joint) */
   bool two_rows;              /* of a tree whose joints all have two rows (substitute) */
+  bool point;                 /* joint: its rows are a point's two, x then y (eliminate_point_*) */
   double stiff;               /* body: the geometric stiffness added to its inertia */
   double y[3];                /* right-hand side, then the solution */
   double d[3][3];             /* D, then D^-1 */
@@ -367,6 +368,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
     n->parent = l->parent >= 0 ? t->place[l->parent] : -1;
     n->dof = (int8_t)l->dof;
     n->body = old < body_nodes;
+    n->point = false; /* (a joint's: set with its rows, see prepare) */
     n->children = l->children;
     n->children_end = l->children_end;
     n->stiff = 0.0;
@@ -492,6 +494,35 @@ static inline __attribute__((always_inline)) void eliminate(int nd, int pd, tb_j
   UNROLLED for (int c = 0; c < pd; ++c) UNROLLED for (int e = 0; e < pd; ++e) UNROLLED for (int r = 0; r < nd; ++r)
       p->d[c][e] -= hp[r][c] * dh[r][e];
   memcpy(n->dh, dh, sizeof dh);
+}
+
+/* eliminate for a body child of a point joint, and a point joint child of a
+ * body (a chain's links, a ragdoll's limbs). A point's rows are x and y:
+ * J = [e_r | lever] on each body, so H between them holds exact zeros and
+ * +-1 (3 x 2 below a joint, 2 x 3 below a body). The kernels leave out the
+ * products with those zeros and keep every other operation and its order:
+ * the same results (up to the sign of an exact zero), in some 40% fewer
+ * operations than the dense eliminate. */
+static inline __attribute__((always_inline)) void eliminate_point_body(tb_jt_node* n, float hp[3][3], tb_jt_node* p) {
+  /* hp = [[s, 0], [0, s], [l0, l1]] */
+  UNROLLED for (int r = 0; r < 3; ++r) UNROLLED for (int c = 0; c < 2; ++c) n->dh[r][c] =
+      n->d[r][c] * hp[c][c] + n->d[r][2] * hp[2][c];
+  UNROLLED for (int c = 0; c < 2; ++c) UNROLLED for (int e = 0; e < 2; ++e) p->d[c][e] =
+      (p->d[c][e] - hp[c][c] * n->dh[c][e]) - hp[2][c] * n->dh[2][e];
+}
+
+static inline __attribute__((always_inline)) void eliminate_point_joint(tb_jt_node* n, float hp[3][3], tb_jt_node* p) {
+  /* hp = [[s, 0, l0], [0, s, l1]] */
+  UNROLLED for (int r = 0; r < 2; ++r) {
+    n->dh[r][0] = n->d[r][0] * hp[0][0];
+    n->dh[r][1] = n->d[r][1] * hp[1][1];
+    n->dh[r][2] = n->d[r][0] * hp[0][2] + n->d[r][1] * hp[1][2];
+  }
+  UNROLLED for (int e = 0; e < 3; ++e) {
+    p->d[0][e] -= hp[0][0] * n->dh[0][e];
+    p->d[1][e] -= hp[1][1] * n->dh[1][e];
+    p->d[2][e] = (p->d[2][e] - hp[0][2] * n->dh[0][e]) - hp[1][2] * n->dh[1][e];
+  }
 }
 
 /* forward: y_p -= H_ip^T D_i^-1 y_i, as (D_i^-1 H_ip)^T y_i (D_i is symmetric) */
@@ -625,7 +656,10 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
       continue;
     }
     tb_jt_joint* j = &t->joints[n->ref];
-    if (fresh) joint_rows(w, ctx, n, j, &t->cold[i]);
+    if (fresh) {
+      joint_rows(w, ctx, n, j, &t->cold[i]);
+      n->point = j->rows.point == 0 && n->dof == 2;
+    }
     if (reload)
       for (int r = 0; r < n->dof; ++r) j->acc[r] = *t->cold[i].impulse[r];
     if (!n->lone) joint_compliance(n, j, g);
@@ -659,7 +693,12 @@ static void factor(tb_joint_tree* t, const tb_step_context* ctx, int from, int t
     if (n->body) body_mass(t, ctx, n, q, use_bias);
     for (int c = n->children_end - 1; c >= n->children; --c) {
       tb_jt_node* child = &t->nodes[c];
-      BY_SHAPE(child->dof, n->dof, eliminate, child, t->cold[c].hp, n);
+      if (child->body && n->point)
+        eliminate_point_body(child, t->cold[c].hp, n);
+      else if (!child->body && child->point)
+        eliminate_point_joint(child, t->cold[c].hp, n);
+      else
+        BY_SHAPE(child->dof, n->dof, eliminate, child, t->cold[c].hp, n);
     }
     invert(n->d, n->dof);
   }
