@@ -541,39 +541,37 @@ bool tb_tree_set_category_bits(tb_tree* tree, int32_t proxy, uint64_t category_b
 
 /* ---------------------------------------------------------------- queries -- */
 
-/* A stack of node indices on the C stack that moves to the heap when full. */
+/* A stack of node indices in the caller's array (local, on the C stack)
+ * that moves to the heap when full. Its address is never taken outside the
+ * inlined push, so that the count stays in a register: in memory, each push
+ * and pop waited on the store of the one before (the queries' inner loop). */
 typedef struct node_stack {
-  int32_t* items;
+  int32_t* items; /* local until it grows; NULL once a growth failed */
   int32_t count, capacity;
-  int32_t local[TB_TREE_STACK_SIZE];
 } node_stack;
 
-static void stack_init(node_stack* s) {
-  s->items = s->local;
-  s->count = 0;
-  s->capacity = TB_TREE_STACK_SIZE;
+static node_stack stack_on(int32_t* local) { return (node_stack){local, 0, TB_TREE_STACK_SIZE}; }
+
+static void stack_free(node_stack s, const int32_t* local) {
+  if (s.items != NULL && s.items != local) tb_mem_free(s.items, (size_t)s.capacity * sizeof *s.items);
 }
 
-static void stack_free(node_stack* s) {
-  if (s->items != s->local) tb_mem_free(s->items, (size_t)s->capacity * sizeof *s->items);
-}
-
-/* The heap part of stack_push, kept out of line: queries push in their
- * innermost loop and almost never spill. */
-static __attribute__((noinline)) bool stack_grow_push(node_stack* s, int32_t v) {
-  int32_t cap = s->capacity * 2;
+/* The stack with twice the room, on the heap; items NULL when out of memory
+ * (what it held freed). Kept out of line: queries push in their innermost
+ * loop and almost never spill. */
+static __attribute__((noinline)) node_stack stack_grown(node_stack s, const int32_t* local) {
+  int32_t cap = s.capacity * 2;
   int32_t* items = tb_mem_alloc((size_t)cap * sizeof *items);
-  if (items == NULL) return false;
-  memcpy(items, s->items, (size_t)s->count * sizeof *items);
-  stack_free(s);
-  s->items = items;
-  s->capacity = cap;
-  s->items[s->count++] = v;
-  return true;
+  if (items != NULL) memcpy(items, s.items, (size_t)s.count * sizeof *items);
+  stack_free(s, local);
+  return (node_stack){items, s.count, cap};
 }
 
-static inline bool stack_push(node_stack* s, int32_t v) {
-  if (__builtin_expect(s->count == s->capacity, 0)) return stack_grow_push(s, v);
+static inline bool stack_push(node_stack* s, const int32_t* local, int32_t v) {
+  if (__builtin_expect(s->count == s->capacity, 0)) {
+    *s = stack_grown(*s, local);
+    if (s->items == NULL) return false;
+  }
   s->items[s->count++] = v;
   return true;
 }
@@ -584,21 +582,21 @@ tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tre
   if (tree->root == TB_TREE_NULL) return TB_OK;
   const tb_tree_node* n = tree->nodes;
   tb_result result = TB_OK;
-  node_stack stack;
-  stack_init(&stack);
-  stack_push(&stack, tree->root);
+  int32_t local[TB_TREE_STACK_SIZE];
+  node_stack stack = stack_on(local);
+  stack_push(&stack, local, tree->root);
   while (stack.count > 0) {
     const tb_tree_node* node = &n[stack.items[--stack.count]];
     if ((node->category_bits & mask) == 0 || !aabb_overlaps(node->aabb, aabb)) continue;
     if (is_leaf(node)) {
       int32_t proxy = (int32_t)(node - n);
       if (!fn(proxy, node->user_id, context)) break;
-    } else if (!stack_push(&stack, node->child2) || !stack_push(&stack, node->child1)) {
+    } else if (!stack_push(&stack, local, node->child2) || !stack_push(&stack, local, node->child1)) {
       result = TB_ERR_OUT_OF_MEMORY;
       break;
     }
   }
-  stack_free(&stack);
+  stack_free(stack, local);
   return result;
 }
 
@@ -778,9 +776,9 @@ bool tb_tree_validate(const tb_tree* tree) {
   /* Walk from the root; a node reached twice or a cycle breaks a parent link. */
   int32_t reached = 0, leaves = 0;
   bool ok = true;
-  node_stack stack;
-  stack_init(&stack);
-  if (!stack_push(&stack, tree->root)) ok = false;
+  int32_t local[TB_TREE_STACK_SIZE];
+  node_stack stack = stack_on(local);
+  if (!stack_push(&stack, local, tree->root)) ok = false;
   while (ok && stack.count > 0) {
     int32_t i = stack.items[--stack.count];
     const tb_tree_node* a = &n[i];
@@ -802,10 +800,10 @@ bool tb_tree_validate(const tb_tree* tree) {
            aabb_contains(a->aabb, n[c1].aabb) && aabb_contains(a->aabb, n[c2].aabb);
       /* a marked node's ancestors are marked (tb_tree_enlarge_proxy stops there) */
       if (ok && a->enlarged) ok = tree->enlarged && (a->parent == TB_TREE_NULL || n[a->parent].enlarged);
-      if (ok) ok = stack_push(&stack, c1) && stack_push(&stack, c2);
+      if (ok) ok = stack_push(&stack, local, c1) && stack_push(&stack, local, c2);
     }
   }
-  stack_free(&stack);
+  stack_free(stack, local);
   return ok && reached == tree->node_count && leaves == tree->proxy_count;
 }
 
@@ -834,15 +832,17 @@ static inline void swap_units(tb_tree_build_unit* units, int32_t i, int32_t j) {
 
 /* The bounds of units[begin, end)'s centres (twice the centres) per axis. */
 static void centre_bounds(const tb_tree_build_unit* units, int32_t begin, int32_t end, float lo[2], float hi[2]) {
-  lo[0] = lo[1] = INFINITY;
-  hi[0] = hi[1] = -INFINITY;
+  /* in locals: through lo and hi (which might be the units' floats, for all
+   * the compiler knows) each comparison waited on the last one's store */
+  float lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
   for (int32_t k = begin; k < end; ++k) {
-    for (int axis = 0; axis < 2; ++axis) {
-      float c = centroid_axis(&units[k], axis);
-      if (c < lo[axis]) lo[axis] = c;
-      if (c > hi[axis]) hi[axis] = c;
-    }
+    float cx = centroid_axis(&units[k], 0), cy = centroid_axis(&units[k], 1);
+    if (cx < lo_x) lo_x = cx;
+    if (cx > hi_x) hi_x = cx;
+    if (cy < lo_y) lo_y = cy;
+    if (cy > hi_y) hi_y = cy;
   }
+  lo[0] = lo_x, lo[1] = lo_y, hi[0] = hi_x, hi[1] = hi_y;
 }
 
 /* Splits units[begin, end) (two or more) in two non-empty parts; returns the
