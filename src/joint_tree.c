@@ -115,6 +115,9 @@ typedef struct tb_jt_cold {
   int a, b;          /* joint: the nodes of bodies A and B, -1 for a static or kinematic one */
   int joint;         /* joint: its index */
   float* impulse[3]; /* joint: where the rows' accumulated impulses live */
+  /* joint, a point's: its anchors and the centres' offset at the step start,
+   * for its rows in the step's later substeps (point_rows) */
+  tb_vec2 frame_a, frame_b, delta_center;
 } tb_jt_cold;
 
 /* A node's place in the graph, as the build finds it (before the nodes are
@@ -586,6 +589,26 @@ static void joint_rows(tb_world* w, const tb_step_context* ctx, const tb_jt_node
   if (n->parent >= 0 && !n->lone) joint_block(j, cold->a == n->parent, cold->hp);
 }
 
+/* joint_rows for a point's two rows (n->point) after a step's first
+ * substep, from the anchors and offset the first kept (the joint record, all
+ * over memory, is not read): the operations of tb_joint_rigid_rows for a
+ * revolute joint (current_frame, set_point_rows). */
+static void point_rows(const tb_step_context* ctx, const tb_jt_node* n, tb_jt_joint* j, tb_jt_cold* cold) {
+  const tb_solver_body* a = &ctx->states[j->sa];
+  const tb_solver_body* b = &ctx->states[j->sb];
+  tb_vec2 ra = tb_rotate(a->dq, cold->frame_a), rb = tb_rotate(b->dq, cold->frame_b);
+  tb_vec2 d = tb_add(tb_add(tb_sub(b->dp, a->dp), cold->delta_center), tb_sub(rb, ra));
+  tb_rigid_rows* rows = &j->rows;
+  rows->count = 2;
+  rows->point = 0;
+  rows->ja[0][0] = rows->jb[0][0] = 1.0f, rows->ja[0][1] = rows->jb[0][1] = 0.0f;
+  rows->ja[0][2] = -ra.y, rows->jb[0][2] = -rb.y, rows->c[0] = d.x;
+  rows->ja[1][0] = rows->jb[1][0] = 0.0f, rows->ja[1][1] = rows->jb[1][1] = 1.0f;
+  rows->ja[1][2] = ra.x, rows->jb[1][2] = rb.x, rows->c[1] = d.y;
+  block_mass(2, j, a, b);
+  if (n->parent >= 0 && !n->lone) joint_block(j, cold->a == n->parent, cold->hp);
+}
+
 /* H of a body toward its parent joint: the transpose of the joint's block. */
 static void body_block(float hp[3][3], const tb_jt_joint* joint, bool side_a) {
   float sign = side_a ? 1.0f : -1.0f;
@@ -648,11 +671,12 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
    * the first, acc holds what tb_joint_tree_store wrote, unchanged since (the
    * warm starts only read it): the biased prepare then needs no joint record. */
   bool reload = use_bias && (ctx->position_updates == 0 || !ctx->enable_warm_starting);
+  bool first = ctx->position_updates == 0; /* a step's first rows: from the joint records */
   for (int i = 0; i < t->node_count; ++i) {
     tb_jt_node* n = &t->nodes[i];
     /* the joint records lie all over memory: ask eight nodes ahead (they
      * waited on the first read of each, 2.5% of rain's step) */
-    if ((fresh || reload) && i + 8 < t->node_count && !t->nodes[i + 8].body) {
+    if (i + 8 < t->node_count && !t->nodes[i + 8].body && ((fresh && (first || !t->nodes[i + 8].point)) || reload)) {
       const char* r = (const char*)tb_joint_at(w, t->cold[i + 8].joint);
       for (size_t line = 0; line < sizeof(tb_joint); line += 64) __builtin_prefetch(r + line);
     }
@@ -662,9 +686,17 @@ static void prepare(tb_world* w, tb_step_context* ctx, bool use_bias) {
       continue;
     }
     tb_jt_joint* j = &t->joints[n->ref];
-    if (fresh) {
+    if (fresh && (first || !n->point)) {
       joint_rows(w, ctx, n, j, &t->cold[i]);
       n->point = j->rows.point == 0 && n->dof == 2;
+      if (n->point) {
+        const tb_joint* record = tb_joint_at(w, t->cold[i].joint);
+        t->cold[i].frame_a = record->frame_a;
+        t->cold[i].frame_b = record->frame_b;
+        t->cold[i].delta_center = record->delta_center;
+      }
+    } else if (fresh) {
+      point_rows(ctx, n, j, &t->cold[i]);
     }
     if (reload)
       for (int r = 0; r < n->dof; ++r) j->acc[r] = *t->cold[i].impulse[r];
