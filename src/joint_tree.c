@@ -149,6 +149,7 @@ void tb_joint_tree_free(tb_joint_tree* t) {
   tb_mem_free(t->place, (size_t)t->place_capacity * sizeof *t->place);
   tb_mem_free(t->body_scratch, (size_t)t->body_capacity * sizeof *t->body_scratch);
   tb_mem_free(t->edges, (size_t)t->edge_capacity * sizeof *t->edges);
+  tb_mem_free(t->edge_joints, (size_t)t->edge_joint_capacity * sizeof *t->edge_joints);
   tb_mem_free(t->components, (size_t)t->component_capacity * sizeof *t->components);
   tb_mem_free(t->keys, (size_t)t->key_capacity * sizeof *t->keys);
   memset(t, 0, sizeof *t);
@@ -262,6 +263,7 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       !tb_array_reserve((void**)&t->place, &t->place_capacity, bodies + joints, sizeof *t->place) ||
       !tb_array_reserve((void**)&t->body_scratch, &t->body_capacity, 2 * bodies, sizeof *t->body_scratch) ||
       !tb_array_reserve((void**)&t->edges, &t->edge_capacity, 2 * joints, sizeof *t->edges) ||
+      !tb_array_reserve((void**)&t->edge_joints, &t->edge_joint_capacity, 2 * joints, sizeof *t->edge_joints) ||
       !tb_array_reserve((void**)&t->components, &t->component_capacity, bodies + joints + 1, sizeof *t->components))
     return false;
 
@@ -388,6 +390,15 @@ bool tb_joint_tree_build(tb_world* w, const tb_step_context* ctx) {
       t->joints[slots].sa = l->sa;
       t->joints[slots].sb = l->sb;
       slots += 1;
+    }
+  }
+  /* a body's joints for body_mass, one load from its edge (edge -> node ->
+   * slot, and the edge's cold record for the side, were a chain of misses) */
+  for (int q = 0; q < ordered; ++q) {
+    if (!t->nodes[q].body) continue;
+    for (int e = t->cold[q].first; e < t->cold[q].first + t->cold[q].count; ++e) {
+      int edge = t->edges[e];
+      t->edge_joints[e] = 2 * t->nodes[edge].ref + (t->cold[edge].a == q);
     }
   }
   for (int k = 0; k < t->component_count; ++k) {
@@ -636,9 +647,9 @@ static void body_mass(const tb_joint_tree* t, const tb_step_context* ctx, tb_jt_
   if (use_bias) {
     double twist = 0.0; /* h k (the rows' r . p) */
     const tb_jt_cold* cold = &t->cold[i];
-    for (int e = 0; e < cold->count; ++e) {
-      int edge = t->edges[cold->first + e];
-      twist += point_twist(&t->joints[t->nodes[edge].ref], t->cold[edge].a == i);
+    for (int e = cold->first; e < cold->first + cold->count; ++e) {
+      int edge_joint = t->edge_joints[e];
+      twist += point_twist(&t->joints[edge_joint >> 1], (edge_joint & 1) != 0);
     }
     n->stiff = tb_maxd((double)ctx->h * twist - 1.0 / (double)s->inv_inertia, 0.0);
   }
@@ -975,5 +986,6 @@ size_t tb_joint_tree_bytes(const tb_joint_tree* t) {
          (size_t)t->cold_capacity * sizeof *t->cold + (size_t)t->order_capacity * sizeof *t->order +
          (size_t)t->link_capacity * sizeof *t->links + (size_t)t->place_capacity * sizeof *t->place +
          (size_t)t->body_capacity * sizeof *t->body_scratch + (size_t)t->edge_capacity * sizeof *t->edges +
+         (size_t)t->edge_joint_capacity * sizeof *t->edge_joints +
          (size_t)t->component_capacity * sizeof *t->components + (size_t)t->key_capacity * sizeof *t->keys;
 }

@@ -33,6 +33,8 @@ typedef struct tb_joint_tree {
   int body_capacity;
   int* edges; /* per body node: its constraint nodes (CSR, first[] in body nodes) */
   int edge_capacity;
+  int* edge_joints; /* per edge: its joint's slot * 2, + 1 where the body is the joint's A (body_mass) */
+  int edge_joint_capacity;
   int* components; /* tree k is nodes [components[k], components[k + 1]) */
   int component_count, component_capacity;
   struct tb_jt_key* keys;      /* per step joint: what its place in the trees depends on (joint_tree.c) */
