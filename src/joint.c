@@ -97,9 +97,7 @@ typedef struct frame {
 
 static inline frame current_frame(const tb_joint* j, const tb_solver_body* a, const tb_solver_body* b) {
   frame f;
-  f.ra = tb_rotate(a->dq, j->frame_a);
-  f.rb = tb_rotate(b->dq, j->frame_b);
-  f.d = tb_add(tb_add(tb_sub(b->dp, a->dp), j->delta_center), tb_sub(f.rb, f.ra));
+  tb_joint_arms(j->frame_a, j->frame_b, j->delta_center, a, b, &f.ra, &f.rb, &f.d);
   f.angle = j->delta_angle + (b->da - a->da);
   return f;
 }
@@ -496,9 +494,9 @@ static void set_row(tb_rigid_rows* out, float** impulses, tb_vec2 n, float arm_a
 }
 
 static void set_point_rows(tb_rigid_rows* out, float** impulses, const frame* f, tb_vec2* impulse) {
-  out->point = out->count;
-  set_row(out, impulses, (tb_vec2){1.0f, 0.0f}, -f->ra.y, -f->rb.y, f->d.x, &impulse->x);
-  set_row(out, impulses, (tb_vec2){0.0f, 1.0f}, f->ra.x, f->rb.x, f->d.y, &impulse->y);
+  tb_joint_add_point_rows(out, f->ra, f->rb, f->d);
+  impulses[out->point] = &impulse->x;
+  impulses[out->point + 1] = &impulse->y;
 }
 
 void tb_joint_rigid_rows(tb_joint* j, const tb_solver_body* a, const tb_solver_body* b, tb_rigid_rows* out,

@@ -601,21 +601,15 @@ static void joint_rows(tb_world* w, const tb_step_context* ctx, const tb_jt_node
 }
 
 /* joint_rows for a point's two rows (n->point) after a step's first
- * substep, from the anchors and offset the first kept (the joint record, all
- * over memory, is not read): the operations of tb_joint_rigid_rows for a
- * revolute joint (current_frame, set_point_rows). */
+ * substep, from the anchors and offset the first kept: the joint record, all
+ * over memory, is not read. */
 static void point_rows(const tb_step_context* ctx, const tb_jt_node* n, tb_jt_joint* j, tb_jt_cold* cold) {
   const tb_solver_body* a = &ctx->states[j->sa];
   const tb_solver_body* b = &ctx->states[j->sb];
-  tb_vec2 ra = tb_rotate(a->dq, cold->frame_a), rb = tb_rotate(b->dq, cold->frame_b);
-  tb_vec2 d = tb_add(tb_add(tb_sub(b->dp, a->dp), cold->delta_center), tb_sub(rb, ra));
-  tb_rigid_rows* rows = &j->rows;
-  rows->count = 2;
-  rows->point = 0;
-  rows->ja[0][0] = rows->jb[0][0] = 1.0f, rows->ja[0][1] = rows->jb[0][1] = 0.0f;
-  rows->ja[0][2] = -ra.y, rows->jb[0][2] = -rb.y, rows->c[0] = d.x;
-  rows->ja[1][0] = rows->jb[1][0] = 0.0f, rows->ja[1][1] = rows->jb[1][1] = 1.0f;
-  rows->ja[1][2] = ra.x, rows->jb[1][2] = rb.x, rows->c[1] = d.y;
+  tb_vec2 ra, rb, d;
+  tb_joint_arms(cold->frame_a, cold->frame_b, cold->delta_center, a, b, &ra, &rb, &d);
+  j->rows.count = 0;
+  tb_joint_add_point_rows(&j->rows, ra, rb, d);
   block_mass(2, j, a, b);
   if (n->parent >= 0 && !n->lone) joint_block(j, cold->a == n->parent, cold->hp);
 }
