@@ -581,17 +581,42 @@ tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tre
   if (!tb_vec_finite(aabb.lower) || !tb_vec_finite(aabb.upper)) return TB_ERR_INVALID_ARGUMENT;
   if (tree->root == TB_TREE_NULL) return TB_OK;
   const tb_tree_node* n = tree->nodes;
+  const tb_tree_node* root = &n[tree->root];
+  if ((root->category_bits & mask) == 0 || !aabb_overlaps(root->aabb, aabb)) return TB_OK;
+  if (is_leaf(root)) {
+    (void)fn(tree->root, root->user_id, context);
+    return TB_OK;
+  }
+  /* The stack holds nodes already found to overlap. An internal node's two
+   * children are loaded and tested together, so that their two loads (cache
+   * misses in a large tree) overlap instead of each waiting on its turn, and
+   * a child that misses is never pushed. The leaves come in the same order as
+   * a depth-first walk that tests each node as it is popped, child1's subtree
+   * before child2's: a leaf child1 is reported at once, before child2 (pushed
+   * first, so popped after anything child1 pushes). */
   tb_result result = TB_OK;
   int32_t local[TB_TREE_STACK_SIZE];
   node_stack stack = stack_on(local);
   stack_push(&stack, local, tree->root);
   while (stack.count > 0) {
-    const tb_tree_node* node = &n[stack.items[--stack.count]];
-    if ((node->category_bits & mask) == 0 || !aabb_overlaps(node->aabb, aabb)) continue;
+    int32_t index = stack.items[--stack.count];
+    const tb_tree_node* node = &n[index];
     if (is_leaf(node)) {
-      int32_t proxy = (int32_t)(node - n);
-      if (!fn(proxy, node->user_id, context)) break;
-    } else if (!stack_push(&stack, local, node->child2) || !stack_push(&stack, local, node->child1)) {
+      if (!fn(index, node->user_id, context)) break;
+      continue;
+    }
+    int32_t i1 = node->child1, i2 = node->child2;
+    const tb_tree_node *c1 = &n[i1], *c2 = &n[i2];
+    bool in1 = (c1->category_bits & mask) != 0 && aabb_overlaps(c1->aabb, aabb);
+    bool in2 = (c2->category_bits & mask) != 0 && aabb_overlaps(c2->aabb, aabb);
+    if (in2 && !stack_push(&stack, local, i2)) {
+      result = TB_ERR_OUT_OF_MEMORY;
+      break;
+    }
+    if (!in1) continue;
+    if (is_leaf(c1)) {
+      if (!fn(i1, c1->user_id, context)) break;
+    } else if (!stack_push(&stack, local, i1)) {
       result = TB_ERR_OUT_OF_MEMORY;
       break;
     }
