@@ -21,12 +21,13 @@ tb_result tb_broad_phase_init(tb_broad_phase* bp) {
 void tb_broad_phase_free(tb_broad_phase* bp) {
   for (int i = 0; i < 3; ++i) tb_tree_destroy(&bp->trees[i]);
   tb_mem_free(bp->move_buffer, (size_t)bp->move_capacity * sizeof *bp->move_buffer);
+  tb_mem_free(bp->keys, (size_t)bp->key_capacity * sizeof *bp->keys);
   tb_mem_free(bp->pair_keys, (size_t)bp->pair_capacity * sizeof *bp->pair_keys);
   memset(bp, 0, sizeof *bp);
 }
 
 size_t tb_broad_phase_tree_bytes(const tb_broad_phase* bp) {
-  size_t bytes = (size_t)bp->move_capacity * sizeof *bp->move_buffer;
+  size_t bytes = (size_t)bp->move_capacity * sizeof *bp->move_buffer + (size_t)bp->key_capacity * sizeof *bp->keys;
   for (int i = 0; i < 3; ++i) bytes += tb_tree_bytes(&bp->trees[i]);
   return bytes;
 }
@@ -122,6 +123,7 @@ static bool queue_move(tb_world* w, int shape_index) {
   if (!tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + 1, sizeof(int))) return false;
   bp->move_buffer[bp->move_count++] = shape_index;
   s->in_move_buffer = true;
+  bp->keys[shape_index].moved = 1;
   return true;
 }
 
@@ -151,6 +153,8 @@ bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
   s->aabb = tb_shape_geom_aabb(s, b->transform);
   s->tree = (int)b->type;
   s->margin = shape_margin(s, b->type);
+  w->broad_phase.keys[shape_index] =
+      (tb_proxy_key){.body = s->body, .group = s->filter.group_index, .tree = (uint8_t)s->tree, .moved = 0};
   s->proxy = tb_tree_create_proxy_with_margin(&w->broad_phase.trees[s->tree], s->aabb, s->margin,
                                               s->filter.category_bits, shape_index);
   if (s->proxy == TB_TREE_NULL) return false;
@@ -164,8 +168,10 @@ bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
 
 bool tb_broad_phase_reserve(tb_world* w, tb_body_type tree, int proxies) {
   tb_broad_phase* bp = &w->broad_phase;
+  /* a new shape takes a free slot of the pool or the next one past it */
   return tb_tree_reserve(&bp->trees[tree], proxies) &&
-         tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + proxies, sizeof(int));
+         tb_array_reserve((void**)&bp->move_buffer, &bp->move_capacity, bp->move_count + proxies, sizeof(int)) &&
+         tb_array_reserve((void**)&bp->keys, &bp->key_capacity, w->shapes.capacity + proxies, sizeof *bp->keys);
 }
 
 tb_result tb_broad_phase_prepare_insert(tb_world* w, const tb_shape* s, tb_transform xf, tb_body_type tree, int proxies,
@@ -189,6 +195,7 @@ bool tb_broad_phase_refilter_proxy(tb_world* w, int shape_index) {
   tb_shape* s = tb_shape_at(w, shape_index);
   if (s->proxy < 0) return true;
   (void)tb_tree_set_category_bits(&w->broad_phase.trees[s->tree], s->proxy, s->filter.category_bits);
+  w->broad_phase.keys[shape_index].group = s->filter.group_index;
   return queue_move(w, shape_index);
 }
 
@@ -200,6 +207,7 @@ void tb_broad_phase_destroy_proxy(tb_world* w, int shape_index) {
     for (int i = 0; i < bp->move_count; ++i)
       if (bp->move_buffer[i] == shape_index) bp->move_buffer[i] = -1;
     s->in_move_buffer = false;
+    bp->keys[shape_index].moved = 0;
   }
   tb_tree_destroy_proxy(&bp->trees[s->tree], s->proxy);
   s->proxy = -1;
@@ -235,7 +243,7 @@ void tb_broad_phase_rebuild(tb_world* w) {
 typedef struct pair_query {
   tb_world* w;
   int shape;
-  const tb_shape* s; /* the shape's record */
+  tb_proxy_key key; /* the shape's */
 } pair_query;
 
 /* Whether two shapes may have a contact, before any contact exists. */
@@ -270,14 +278,13 @@ static bool pair_callback(int32_t proxy, int32_t other, void* context) {
     __builtin_prefetch(&bp->pair_keys[pair_hash(pair_key(q->shape, other)) & (uint32_t)(bp->pair_capacity - 1)]);
   /* both moved and in the same tree: the pair is found from both sides; take
    * it once, from the higher index, so the order of creation is fixed */
-  const tb_shape* o = tb_shape_at(w, other);
-  const tb_shape* s = q->s;
-  if (o->in_move_buffer && o->tree == s->tree && other > q->shape) return true;
+  const tb_proxy_key o = bp->keys[other], s = q->key;
+  if (o.moved && o.tree == s.tree && other > q->shape) return true;
   /* Shapes of one body, or of one negative group (a ragdoll's limbs), never
    * pair (should_pair): asked first, they need no look-up in the pair set,
    * which misses the cache (rain's ragdolls found their own limbs in most of
    * their queries, every step). */
-  if (o->body == s->body || (o->filter.group_index < 0 && o->filter.group_index == s->filter.group_index)) return true;
+  if (o.body == s.body || (o.group < 0 && o.group == s.group)) return true;
   if (tb_pair_exists(bp, q->shape, other)) return true;
   if (!should_pair(w, q->shape, other)) return true;
   (void)tb_contact_create(w, q->shape, other); /* out of memory: retried when it moves again */
@@ -291,7 +298,7 @@ void tb_broad_phase_update_pairs(tb_world* w) {
     if (shape_index < 0) continue;
     const tb_shape* s = tb_shape_at(w, shape_index);
     tb_aabb fat = s->fat_aabb;
-    pair_query q = {w, shape_index, s};
+    pair_query q = {w, shape_index, bp->keys[shape_index]};
     /* A dynamic proxy looks everywhere; others only among dynamic proxies.
      * Only proxies whose category the shape's mask takes can pair with it
      * (tb_filters_collide), and the trees skip the subtrees with none (a
@@ -306,7 +313,10 @@ void tb_broad_phase_update_pairs(tb_world* w) {
     }
   }
   for (int i = 0; i < bp->move_count; ++i)
-    if (bp->move_buffer[i] >= 0) tb_shape_at(w, bp->move_buffer[i])->in_move_buffer = false;
+    if (bp->move_buffer[i] >= 0) {
+      tb_shape_at(w, bp->move_buffer[i])->in_move_buffer = false;
+      bp->keys[bp->move_buffer[i]].moved = 0;
+    }
   bp->move_count = 0;
   tb_contacts_sort_new(w);
 }

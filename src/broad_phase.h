@@ -17,10 +17,24 @@
  * row is the same at either. */
 #define TB_AABB_MARGIN 0.05f
 
+/* What the pair query asks of each shape its box meets, by shape slot, kept
+ * beside the trees: read from the shape records, each candidate was a cache
+ * miss, and most candidates are a pair that exists or the other side of a
+ * pair whose two proxies both moved. Set with the proxy; moved mirrors the
+ * shape's in_move_buffer. */
+typedef struct tb_proxy_key {
+  int32_t body;  /* the shape's body slot */
+  int32_t group; /* its filter's group_index */
+  uint8_t tree;  /* which tree holds its proxy */
+  uint8_t moved; /* queued in the move buffer */
+} tb_proxy_key;
+
 typedef struct tb_broad_phase {
   tb_tree trees[3]; /* indexed by tb_body_type */
   int* move_buffer; /* shape indices; -1 for a proxy destroyed since */
   int move_count, move_capacity;
+  tb_proxy_key* keys; /* by shape slot: room for every slot of the shape pool plus those reserved */
+  int key_capacity;
   /* open-addressing hash set of the shape pairs that have a contact: key (low
    * shape << 32 | high shape) + 1. Keys only: the pair query asks whether a
    * pair exists, never which contact it is (a second array for that cost
@@ -33,7 +47,7 @@ struct tb_world;
 
 tb_result tb_broad_phase_init(tb_broad_phase* bp);
 void tb_broad_phase_free(tb_broad_phase* bp);
-/* Bytes held: the trees and the move buffer; the pair set. */
+/* Bytes held: the trees, the move buffer and the proxies' keys; the pair set. */
 size_t tb_broad_phase_tree_bytes(const tb_broad_phase* bp);
 size_t tb_broad_phase_pair_bytes(const tb_broad_phase* bp);
 /* Proxies follow their shapes: create (and queue for pair finding), destroy,
