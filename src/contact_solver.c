@@ -172,10 +172,10 @@ typedef struct tb_deep_block {
   tb_f4 nx, ny, ma, ja, mb, jb;
   tb_f4 k11, k12, k22, n11, n12, n22;
   tb_f4 rax[2], ray[2], rbx[2], rby[2]; /* step start anchors */
-  tb_f4 base_separation[2], push_depth[2], normal_mass[2];
+  tb_f4 target[2], normal_mass[2];      /* target: the push speed each point is after */
 } tb_deep_block;
-_Static_assert(sizeof(tb_deep_block) == 4 * 132,
-               "the stress pile-up's memory budget counts 132 B a deep contact (tests/stress/pileup.c)");
+_Static_assert(sizeof(tb_deep_block) == 4 * 124,
+               "the stress pile-up's memory budget counts 124 B a deep contact (tests/stress/pileup.c)");
 
 /* ---- scratch --------------------------------------------------------------- */
 
@@ -1398,8 +1398,9 @@ bool tb_contact_solver_eight_lanes(void) { return eight_lanes(); }
 
 /* ---- deep overlap push-out ----------------------------------------------------- */
 
-/* Copies what the push-out reads of a group's lanes out of their blocks. */
-static void load_deep(tb_deep_block* d, const tb_wide_contact* wide) {
+/* Copies what the push-out reads of a group's lanes out of their blocks; the
+ * targets follow (deep_targets). */
+static void load_deep(tb_deep_block* d, const tb_wide_contact* wide, tb_f4 base_separation[2], tb_f4 push_depth[2]) {
   for (int k = 0; k < 4 && d->block[k] >= 0; ++k) {
     const tb_wide_contact* c = &wide[d->block[k]];
     int lane = d->lane[k];
@@ -1421,8 +1422,8 @@ static void load_deep(tb_deep_block* d, const tb_wide_contact* wide) {
       d->ray[p][k] = cold_of(c)->q[p].ray[lane];
       d->rbx[p][k] = cold_of(c)->q[p].rbx[lane];
       d->rby[p][k] = cold_of(c)->q[p].rby[lane];
-      d->base_separation[p][k] = cold_of(c)->q[p].base_separation[lane];
-      d->push_depth[p][k] = c->p[p].push_depth[lane];
+      base_separation[p][k] = cold_of(c)->q[p].base_separation[lane];
+      push_depth[p][k] = c->p[p].push_depth[lane];
       d->normal_mass[p][k] = c->p[p].normal_mass[lane];
     }
   }
@@ -1472,32 +1473,38 @@ void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
   const tb_solver_body* states = ctx->states;
   const tb_f4 zero = splat(0.0f), push = splat(ctx->contact_push_max_velocity);
   const tb_f4 rate = splat(TB_PUSH_OUT_RATE * ctx->inv_h);
+  /* The targets depend on the positions, which the sweeps do not move (they
+   * move the push velocities u): once per substep, not once per sweep. */
   for (int i = 0; i < w->deep_count; ++i) {
-    load_deep(&deep[i], wide); /* the base separations move with the slides */
-    deep[i].impulse[0] = deep[i].impulse[1] = zero;
+    tb_deep_block* d = &deep[i];
+    tb_f4 base_separation[2], push_depth[2];
+    load_deep(d, wide, base_separation, push_depth); /* the base separations move with the slides */
+    d->impulse[0] = d->impulse[1] = zero;
+    tb_f4 m[4];
+    load_rows(states, d->a, 1, m); /* (inv_inertia, da, dp.x, dp.y) */
+    tb_f4 da_a = m[1], dpx_a = m[2], dpy_a = m[3];
+    load_rows(states, d->b, 1, m);
+    tb_f4 da_b = m[1], dpx_b = m[2], dpy_b = m[3];
+    for (int p = 0; p < 2; ++p) {
+      tb_f4 rax = d->rax[p], ray = d->ray[p], rbx = d->rbx[p], rby = d->rby[p];
+      /* the separation now, to first order in the angles (as normal_target) */
+      tb_f4 mx = (dpx_b + -da_b * rby) - (dpx_a + -da_a * ray);
+      tb_f4 my = (dpy_b + da_b * rbx) - (dpy_a + da_a * rax);
+      tb_f4 sep = base_separation[p] + (mx * d->nx + my * d->ny);
+      d->target[p] = min4(rate * max4(-push_depth[p] - sep, zero), push);
+    }
   }
   for (int sweep = 0; sweep < TB_PUSH_OUT_SWEEPS; ++sweep)
     for (int i = 0; i < w->deep_count; ++i) {
       tb_deep_block* d = &deep[i];
-      tb_f4 m[4];
-      load_rows(states, d->a, 1, m); /* (inv_inertia, da, dp.x, dp.y) */
-      tb_f4 da_a = m[1], dpx_a = m[2], dpy_a = m[3];
-      load_rows(states, d->b, 1, m);
-      tb_f4 da_b = m[1], dpx_b = m[2], dpy_b = m[3];
       wide_push ua = gather_push(u, d->a), ub = gather_push(u, d->b);
       tb_f4 nx = d->nx, ny = d->ny;
       /* r = (push speed without this contact's impulses) - target; an inert
        * second point (no mass) gets r = 0 and never moves */
       tb_f4 r[2];
-      for (int p = 0; p < 2; ++p) {
-        tb_f4 rax = d->rax[p], ray = d->ray[p], rbx = d->rbx[p], rby = d->rby[p];
-        /* the separation now, to first order in the angles (as normal_target) */
-        tb_f4 mx = (dpx_b + -da_b * rby) - (dpx_a + -da_a * ray);
-        tb_f4 my = (dpy_b + da_b * rbx) - (dpy_a + da_a * rax);
-        tb_f4 sep = d->base_separation[p] + (mx * nx + my * ny);
-        tb_f4 target = min4(rate * max4(-d->push_depth[p] - sep, zero), push);
-        r[p] = blend(d->normal_mass[p] > zero, push_speed(&ua, &ub, rax, ray, rbx, rby, nx, ny) - target, zero);
-      }
+      for (int p = 0; p < 2; ++p)
+        r[p] = blend(d->normal_mass[p] > zero,
+                     push_speed(&ua, &ub, d->rax[p], d->ray[p], d->rbx[p], d->rby[p], nx, ny) - d->target[p], zero);
       tb_f4* acc = d->impulse;
       r[0] -= d->k11 * acc[0] + d->k12 * acc[1];
       r[1] -= d->k12 * acc[0] + d->k22 * acc[1];

@@ -41,7 +41,7 @@ tb_world_id stress_new_pileup(int count) {
  * (tb_contact, with its manifold, and the pool's 6 B of generation and free
  * link); its share of the contact solver: one lane of a block of four
  * (tb_wide_contact in contact_solver.c, 720 B: 180 B a lane), its constraint
- * (20 B), its places in the step list (4 B), the deep list (132 B: where
+ * (20 B), its places in the step list (4 B), the deep list (124 B: where
  * the contact is, and a copy of what the push-out's sweeps read) and the
  * colouring scratch (16 B); its begin event (contact events are on by
  * default); and its slots in the pair set, 12 B each, 4 to 8 a pair (the set
@@ -49,7 +49,7 @@ tb_world_id stress_new_pileup(int count) {
  * twice what they need. Before issue 23, the contacts beyond the solver's 24
  * colours each took a whole block of four: 1,048 B a pair. */
 static double pair_budget(void) {
-  double records = (double)sizeof(tb_contact) + 6.0 + 180.0 + 20.0 + 4.0 + 132.0 + 16.0;
+  double records = (double)sizeof(tb_contact) + 6.0 + 180.0 + 20.0 + 4.0 + 124.0 + 16.0;
   records += (double)sizeof(tb_contact_begin_event);
   return 2.0 * records + 8.0 * 12.0;
 }
