@@ -148,10 +148,20 @@ typedef struct tb_contact_constraint {
   float restitution;
   float relative_velocity[2]; /* normal speed of the points at the step start */
   float spin_a, spin_b;       /* the bodies' angular velocities at the step start (see restitution_targets) */
-  float target[2];            /* normal speed after the bounce, of the points in bouncing (bit p: point p) */
-  int bouncing;
-  int next_bouncing; /* the next constraint in step order with a bouncing point, -1 after the last */
 } tb_contact_constraint;
+
+/* A point that bounces this step, copied out of its block for the
+ * restitution passes, which then stream through these in step order instead
+ * of chasing each contact's block (the positions, and so its arms and K, do
+ * not change during the passes). */
+typedef struct tb_bounce {
+  int32_t a, b;         /* solver bodies */
+  int32_t block, point; /* where the normal impulse goes back: wide block, and point * 4 + lane */
+  float nx, ny, ma, ja, mb, jb;
+  float rax, ray, rbx, rby, k; /* the arms at the common point now, and K there */
+  float target;                /* normal speed after the bounce */
+  float impulse;               /* the point's accumulated normal impulse */
+} tb_bounce;
 
 /* Up to four contacts with a point deeper than its push depth (less half
  * TB_DEEP_OVERLAP) at the step start, which share no body but the static
@@ -1657,13 +1667,12 @@ static float normal_speed(const tb_solver_body* sa, const tb_solver_body* sb, tb
  * (J = J_e) this is Newton's rule itself; with it, a frictionless e = 1
  * impact of bodies sliding past each other keeps its energy (Newton's rule
  * with the approach at J lost 2.6%; the bounce along J_e turned the bodies). */
-static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact* wc, const tb_solver_body* states,
-                                float threshold) {
-  int lane = cc->lane % 4;
+static int restitution_targets(const tb_contact_constraint* cc, const tb_wide_contact* wc, const tb_solver_body* states,
+                               float threshold, tb_bounce* out) {
+  int lane = cc->lane % 4, count = 0;
   const tb_solver_body* sa = &states[wc->a[lane]];
   const tb_solver_body* sb = &states[wc->b[lane]];
   tb_vec2 n = {wc->nx[lane], wc->ny[lane]};
-  cc->bouncing = 0;
   for (int p = 0; p < cc->point_count; ++p) {
     const tb_wide_point* cp = &wc->p[p];
     const tb_wide_anchor* cq = &cold_of(wc)->q[p];
@@ -1683,9 +1692,26 @@ static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact
     float vn = normal_speed(sa, sb, ra, rb, n), vn_e = normal_speed(sa, sb, rea, reb, n);
     float eb = cc->restitution * before;
     float target = sqrtf(tb_maxf(vn * vn + k / k_e * (eb * eb - vn_e * vn_e), 0.0f));
-    cc->target[p] = before > 0.0f ? -target : target; /* struck from behind: it approaches at e before */
-    cc->bouncing |= 1 << p;
+    out[count++] = (tb_bounce){.a = wc->a[lane],
+                               .b = wc->b[lane],
+                               .block = cc->lane / 4,
+                               .point = 4 * p + lane,
+                               .nx = n.x,
+                               .ny = n.y,
+                               .ma = wc->ma[lane],
+                               .ja = wc->ja[lane],
+                               .mb = wc->mb[lane],
+                               .jb = wc->jb[lane],
+                               .rax = ra.x,
+                               .ray = ra.y,
+                               .rbx = rb.x,
+                               .rby = rb.y,
+                               .k = k,
+                               /* struck from behind: it approaches at e before */
+                               .target = before > 0.0f ? -target : target,
+                               .impulse = cp->normal_impulse[lane]};
   }
+  return count;
 }
 
 /* Newton's restitution on the points that pushed during the step:
@@ -1701,30 +1727,20 @@ static void restitution_targets(tb_contact_constraint* cc, const tb_wide_contact
  * leaving such a point out let its neighbour's bounce drive the struck body
  * through it unopposed, after the substeps had stopped it inelastically.
  * Returns the largest normal speed change of a point. */
-static float apply_restitution(const tb_contact_constraint* cc, tb_wide_contact* wc, tb_solver_body* states) {
-  int lane = cc->lane % 4;
-  tb_solver_body* sa = &states[wc->a[lane]];
-  tb_solver_body* sb = &states[wc->b[lane]];
-  tb_vec2 n = {wc->nx[lane], wc->ny[lane]};
-  float ma = wc->ma[lane], ja = wc->ja[lane], mb = wc->mb[lane], jb = wc->jb[lane];
-  float change = 0.0f;
-  for (int p = 0; p < cc->point_count; ++p) {
-    if (!(cc->bouncing & (1 << p))) continue;
-    tb_wide_point* cp = &wc->p[p];
-    tb_vec2 ra, rb;
-    float k = arms_at(wc, cp, lane, &ra, &rb);
-    float impulse = (cc->target[p] - normal_speed(sa, sb, ra, rb, n)) / k;
-    float total = tb_maxf(cp->normal_impulse[lane] + impulse, 0.0f);
-    impulse = total - cp->normal_impulse[lane];
-    cp->normal_impulse[lane] = total;
-    change = tb_maxf(change, fabsf(impulse) * k);
-    tb_vec2 P = tb_scale(impulse, n);
-    sa->v = tb_mul_add(sa->v, -ma, P);
-    sa->w -= ja * tb_cross(ra, P);
-    sb->v = tb_mul_add(sb->v, mb, P);
-    sb->w += jb * tb_cross(rb, P);
-  }
-  return change;
+static float apply_restitution(tb_bounce* r, tb_solver_body* states) {
+  tb_solver_body* sa = &states[r->a];
+  tb_solver_body* sb = &states[r->b];
+  tb_vec2 n = {r->nx, r->ny}, ra = {r->rax, r->ray}, rb = {r->rbx, r->rby};
+  float impulse = (r->target - normal_speed(sa, sb, ra, rb, n)) / r->k;
+  float total = tb_maxf(r->impulse + impulse, 0.0f);
+  impulse = total - r->impulse;
+  r->impulse = total;
+  tb_vec2 P = tb_scale(impulse, n);
+  sa->v = tb_mul_add(sa->v, -r->ma, P);
+  sa->w -= r->ja * tb_cross(ra, P);
+  sb->v = tb_mul_add(sb->v, r->mb, P);
+  sb->w += r->jb * tb_cross(rb, P);
+  return fabsf(impulse) * r->k;
 }
 
 void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
@@ -1739,25 +1755,29 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
    * more than TB_RESTITUTION_TOLERANCE (one pass for lone contacts). */
   bool bouncy = false; /* most scenes have no restitution: one look instead of the passes */
   for (int k = 0; k < w->step_contact_count; ++k) bouncy |= cs[k].restitution != 0.0f;
-  /* The passes visit only the contacts with a point to bounce, chained in
-   * step order: in a churning pile most contacts have restitution but few
-   * approach faster than the threshold (spinner: 2,900 of 14,400, with all 16
-   * passes a step). */
-  int first = -1, *link = &first;
+  /* The passes visit only the points that bounce, copied in step order: in a
+   * churning pile most contacts have restitution but few approach faster than
+   * the threshold (spinner: 2,900 of 14,400, with all 16 passes a step). Out
+   * of memory, the points not copied do not bounce this step (the step
+   * reports it). */
+  tb_bounce* bounces = (tb_bounce*)w->bounces;
+  int count = 0;
   for (int k = 0; bouncy && k < w->step_contact_count; ++k) {
     if (cs[k].restitution == 0.0f) continue;
-    restitution_targets(&cs[k], &wide[cs[k].lane / 4], ctx->states, ctx->restitution_threshold);
-    if (cs[k].bouncing == 0) continue;
-    *link = k;
-    link = &cs[k].next_bouncing;
+    if (count + 2 > w->bounce_capacity) {
+      if (!tb_array_reserve(&w->bounces, &w->bounce_capacity, count + 2, sizeof(tb_bounce))) break;
+      bounces = (tb_bounce*)w->bounces;
+    }
+    count +=
+        restitution_targets(&cs[k], &wide[cs[k].lane / 4], ctx->states, ctx->restitution_threshold, &bounces[count]);
   }
-  *link = -1;
-  for (int pass = 0; first >= 0 && pass < TB_RESTITUTION_PASSES; ++pass) {
+  for (int pass = 0; count > 0 && pass < TB_RESTITUTION_PASSES; ++pass) {
     float change = 0.0f;
-    for (int k = first; k >= 0; k = cs[k].next_bouncing)
-      change = tb_maxf(change, apply_restitution(&cs[k], &wide[cs[k].lane / 4], ctx->states));
+    for (int i = 0; i < count; ++i) change = tb_maxf(change, apply_restitution(&bounces[i], ctx->states));
     if (change <= TB_RESTITUTION_TOLERANCE) break;
   }
+  for (int i = 0; i < count; ++i)
+    wide[bounces[i].block].p[bounces[i].point / 4].normal_impulse[bounces[i].point % 4] = bounces[i].impulse;
   /* the lanes' accumulated impulses are kept for the next step's warm start */
   for (int k = 0; k < w->step_contact_count; ++k) {
     const tb_wide_contact* wc = &wide[cs[k].lane / 4];
@@ -1779,7 +1799,7 @@ size_t tb_contact_solver_bytes(const tb_world* w) {
          (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts +
          (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts +
          (size_t)w->wide_capacity * 2 * sizeof(tb_wide_contact) + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
-         (size_t)w->push_capacity * sizeof *w->push_velocities;
+         (size_t)w->bounce_capacity * sizeof(tb_bounce) + (size_t)w->push_capacity * sizeof *w->push_velocities;
 }
 
 void tb_contact_solver_free(tb_world* w) {
@@ -1790,5 +1810,6 @@ void tb_contact_solver_free(tb_world* w) {
   tb_mem_free(w->contact_degree, (size_t)w->degree_capacity);
   tb_mem_free(w->wide, (size_t)w->wide_capacity * 2 * sizeof(tb_wide_contact));
   tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_block));
+  tb_mem_free(w->bounces, (size_t)w->bounce_capacity * sizeof(tb_bounce));
   tb_mem_free(w->push_velocities, (size_t)w->push_capacity * sizeof *w->push_velocities);
 }

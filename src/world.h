@@ -89,6 +89,8 @@ typedef struct tb_world {
   int wide_fixed_from; /* the first block of contacts with a body that does not move (contact_solver.c) */
   void* deep_contacts; /* contacts with a point overlapping deeply this step (contact_solver.c) */
   int deep_capacity, deep_count;
+  void* bounces; /* the points that bounce this step, for the restitution passes (contact_solver.c) */
+  int bounce_capacity;
   float* push_velocities; /* per solver body: the push-out's (v.x, v.y, w, unused), momentum-free */
   int push_capacity;
   int* step_joints;
