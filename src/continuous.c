@@ -295,11 +295,19 @@ static void sweep_body(tb_world* w, int body_index, bool bullet) {
   }
 }
 
-/* Whether a fast body's sweep can meet anything of the static tree: its
- * swept box (both ends, grown by its extent and by the turn's bulge, which
- * covers each shape's box in sweep_body) overlaps the tree's root box. Most
- * fast bodies are far from the static world (a swinging grid, debris in the
- * air): they skip the transforms and the shapes' boxes. */
+static bool found_one(int32_t proxy, int32_t user_id, void* context) {
+  (void)proxy;
+  (void)user_id;
+  *(bool*)context = true;
+  return false; /* one is enough */
+}
+
+/* Whether a fast body's sweep can meet anything of the static tree: whether
+ * its swept box (both ends, grown by its extent and by the turn's bulge,
+ * which covers each shape's box in sweep_body) overlaps a static proxy's.
+ * Most fast bodies are away from the static world (a swinging grid, debris in
+ * the air, the middle of a pile in a bin): they skip the transforms, the
+ * shapes' boxes and their queries, which would find nothing. */
 static bool may_reach_static(const tb_world* w, const tb_body* b) {
   const tb_tree* tree = &w->broad_phase.trees[TB_STATIC_BODY];
   if (tree->root == TB_TREE_NULL) return false;
@@ -307,9 +315,9 @@ static bool may_reach_static(const tb_world* w, const tb_body* b) {
   float r = b->max_extent * (1.0f + tb_minf(tb_minf(0.5f * turn, 0.125f * turn * turn), 2.0f));
   tb_aabb box = {{tb_minf(b->center0.x, b->center.x) - r, tb_minf(b->center0.y, b->center.y) - r},
                  {tb_maxf(b->center0.x, b->center.x) + r, tb_maxf(b->center0.y, b->center.y) + r}};
-  tb_aabb root = tree->nodes[tree->root].aabb;
-  return box.lower.x <= root.upper.x && root.lower.x <= box.upper.x && box.lower.y <= root.upper.y &&
-         root.lower.y <= box.upper.y;
+  bool found = false;
+  (void)tb_tree_query(tree, box, UINT64_MAX, found_one, &found);
+  return found;
 }
 
 int tb_solve_continuous(tb_world* w) {
