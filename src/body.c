@@ -76,66 +76,56 @@ void tb_body_keep_in_world(tb_body* b) {
 }
 
 /* Extents about the centre of mass: the farthest surface point (rotation seen
- * as speed, for sleep and the relax passes), the thinnest half-thickness (how
- * far the body may move in a step before it could pass through something) and
- * the farthest point of the shape's core (how far a turn moves the region the
- * shape covers: a rounded shape is its core swept by a disc, and turning about
- * the centre of mass moves the region by no more than it moves the core's
- * points, by |turn| |p - centre| each; a disc about the centre of mass covers
- * the same region however it turns). One shape's here; the body's are the
- * largest far and turn and the least thin of its shapes. */
-typedef struct shape_extent {
-  float far, thin, turn;
-} shape_extent;
-
-static shape_extent shape_extents(const tb_body* b, const tb_shape* s) {
-  shape_extent e = {0.0f, tb_units.linear_slop, 0.0f};
-  float radius = 0.0f;
+ * as speed, for sleep and sweeps) and the thinnest half-thickness (how far the
+ * body may move in a step before it could pass through something); one
+ * shape's here, the body's the largest far and the least thin of its shapes. */
+static void shape_extents(const tb_body* b, const tb_shape* s, float* far_out, float* thin_out) {
+  float far = 0.0f, thin = tb_units.linear_slop;
   switch (s->type) {
     case TB_SHAPE_CIRCLE:
-      e.turn = tb_length(tb_sub(s->geom.circle.center, b->local_center));
-      radius = e.thin = s->geom.circle.radius;
+      far = tb_length(tb_sub(s->geom.circle.center, b->local_center)) + s->geom.circle.radius;
+      thin = s->geom.circle.radius;
       break;
     case TB_SHAPE_CAPSULE:
-      e.turn = tb_maxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
-                       tb_length(tb_sub(s->geom.capsule.center2, b->local_center)));
-      radius = e.thin = s->geom.capsule.radius;
+      far = tb_maxf(tb_length(tb_sub(s->geom.capsule.center1, b->local_center)),
+                    tb_length(tb_sub(s->geom.capsule.center2, b->local_center))) +
+            s->geom.capsule.radius;
+      thin = s->geom.capsule.radius;
       break;
     case TB_SHAPE_SEGMENT:
-      e.turn = tb_maxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
-                       tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
+      far = tb_maxf(tb_length(tb_sub(s->geom.segment.point1, b->local_center)),
+                    tb_length(tb_sub(s->geom.segment.point2, b->local_center)));
       break;
     case TB_SHAPE_CHAIN_SEGMENT:
-      e.turn = tb_maxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
-                       tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
+      far = tb_maxf(tb_length(tb_sub(s->geom.chain_segment.segment.point1, b->local_center)),
+                    tb_length(tb_sub(s->geom.chain_segment.segment.point2, b->local_center)));
       break;
     case TB_SHAPE_POLYGON: {
       const tb_polygon* p = &s->geom.polygon;
-      e.thin = TB_MAX_LENGTH;
+      thin = TB_MAX_LENGTH;
       for (int k = 0; k < p->count; ++k) {
-        e.turn = tb_maxf(e.turn, tb_length(tb_sub(p->vertices[k], b->local_center)));
-        e.thin = tb_minf(e.thin, tb_dot(p->normals[k], tb_sub(p->vertices[k], p->centroid))); /* centroid to edge */
+        far = tb_maxf(far, tb_length(tb_sub(p->vertices[k], b->local_center)));
+        thin = tb_minf(thin, tb_dot(p->normals[k], tb_sub(p->vertices[k], p->centroid))); /* centroid to edge */
       }
-      radius = p->radius;
-      e.thin += radius;
+      far += p->radius;
+      thin += p->radius;
       break;
     }
   }
-  e.far = e.turn + radius;
-  return e;
+  *far_out = far;
+  *thin_out = thin;
 }
 
 static void update_extents(tb_world* w, tb_body* b) {
-  float max_extent = 0.0f, min_extent = TB_MAX_LENGTH, turn_extent = 0.0f;
+  float max_extent = 0.0f, min_extent = TB_MAX_LENGTH;
   for (int i = b->shape_list; i >= 0; i = tb_shape_at(w, i)->next) {
-    shape_extent e = shape_extents(b, tb_shape_at(w, i));
-    max_extent = tb_maxf(max_extent, e.far);
-    min_extent = tb_minf(min_extent, e.thin);
-    turn_extent = tb_maxf(turn_extent, e.turn);
+    float far, thin;
+    shape_extents(b, tb_shape_at(w, i), &far, &thin);
+    max_extent = tb_maxf(max_extent, far);
+    min_extent = tb_minf(min_extent, thin);
   }
   b->max_extent = max_extent;
   b->min_extent = min_extent;
-  b->turn_extent = turn_extent;
 }
 
 void tb_body_add_shape_mass(tb_world* w, tb_body* b, const tb_shape* s) {
@@ -144,10 +134,10 @@ void tb_body_add_shape_mass(tb_world* w, tb_body* b, const tb_shape* s) {
    * thousands of boxes on one static body was built in time quadratic in its
    * shapes). */
   if (b->type == TB_STATIC_BODY && !b->mass_overridden && b->local_center.x == 0.0f && b->local_center.y == 0.0f) {
-    shape_extent e = shape_extents(b, s);
-    b->max_extent = tb_maxf(b->max_extent, e.far);
-    b->min_extent = tb_minf(b->min_extent, e.thin);
-    b->turn_extent = tb_maxf(b->turn_extent, e.turn);
+    float far, thin;
+    shape_extents(b, s, &far, &thin);
+    b->max_extent = tb_maxf(b->max_extent, far);
+    b->min_extent = tb_minf(b->min_extent, thin);
     return;
   }
   tb_body_update_mass(w, b);

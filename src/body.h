@@ -50,7 +50,6 @@ typedef struct tb_body {
   float sleep_threshold; /* m/s */
   float max_extent;      /* largest distance from the centre of mass to a shape's surface */
   float min_extent;      /* smallest half-thickness of its shapes (continuous collision) */
-  float turn_extent;     /* largest distance from the centre of mass to a shape's core (how far a turn moves them) */
   tb_vec2 center0;       /* centre and angle when the step began (continuous collision) */
   float angle0;
 

@@ -476,14 +476,12 @@ int tb_solve(tb_world* w, float dt, int substeps) {
     } else {
       b->sleep_time = 0.0f;
     }
-    /* continuous collision for bodies whose shapes moved more than half
-     * their thinnest part, or more than the speculative distance, this step:
-     * the speculative points of slower ones stop them at the surface, faster
-     * ones would sink into static geometry before the contact catches them.
-     * A turn moves the region a shape covers by its core's reach
-     * (turn_extent), not its surface's: a ball rolling at 1 m/s is slow */
+    /* continuous collision for bodies that moved more than half their
+     * thinnest part, or more than the speculative distance, this step: the
+     * speculative points of slower ones stop them at the surface, faster ones
+     * would sink into static geometry before the contact catches them */
     if (w->enable_continuous && b->type == TB_DYNAMIC_BODY)
-      b->is_fast = b->is_bullet || tb_length(moved) + b->turn_extent * fabsf(turned) >
+      b->is_fast = b->is_bullet || tb_length(moved) + b->max_extent * fabsf(turned) >
                                        tb_minf(0.5f * b->min_extent, tb_units.speculative_distance);
   }
   return bad;
