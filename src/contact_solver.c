@@ -1408,8 +1408,9 @@ bool tb_contact_solver_eight_lanes(void) { return eight_lanes(); }
 
 /* ---- deep overlap push-out ----------------------------------------------------- */
 
-/* Copies what the push-out reads of a group's lanes out of their blocks; the
- * targets follow (deep_targets). */
+/* Copies what the push-out's sweeps read of a group's lanes out of their
+ * blocks, and into base_separation and push_depth what its targets are
+ * computed from. */
 static void load_deep(tb_deep_block* d, const tb_wide_contact* wide, tb_f4 base_separation[2], tb_f4 push_depth[2]) {
   for (int k = 0; k < 4 && d->block[k] >= 0; ++k) {
     const tb_wide_contact* c = &wide[d->block[k]];
@@ -1726,7 +1727,7 @@ static int restitution_targets(const tb_contact_constraint* cc, const tb_wide_co
  * (in the mass metric), which keeps the kinetic energy and the momentum;
  * leaving such a point out let its neighbour's bounce drive the struck body
  * through it unopposed, after the substeps had stopped it inelastically.
- * Returns the largest normal speed change of a point. */
+ * One bouncing point (tb_bounce); returns the normal speed change it made. */
 static float apply_restitution(tb_bounce* r, tb_solver_body* states) {
   tb_solver_body* sa = &states[r->a];
   tb_solver_body* sb = &states[r->b];
