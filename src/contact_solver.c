@@ -88,13 +88,17 @@ typedef struct tb_wide_anchor {
   tb_f4 rax, ray, rbx, rby; /* anchors from each centre of mass, world-oriented, at step start */
   tb_f4 live;               /* 1 for a point of the manifold, 0 for an inert one */
   tb_f4 base_separation;    /* s0, the separation at the step start */
-  /* the normal impulses applied in the step, summed, and summed times the
-   * arms they were applied at (restitution's J_e) */
-  tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
-  tb_f4 max_normal_impulse;  /* the largest normal impulse of the step (kept where the block is bouncy) */
   tb_f4 shift_a, shift_b;    /* the common point's share of the relative displacement, per arm (see arms_now) */
   tb_f4 collided_separation; /* s0 as collided; base_separation differs past the patch's end (measure_slide) */
 } tb_wide_anchor;
+
+/* A point's record for restitution: the normal impulses applied in the
+ * step, summed, and summed times the arms they were applied at
+ * (restitution's J_e), and the largest normal impulse of the step. */
+typedef struct tb_wide_record {
+  tb_f4 applied, applied_rax, applied_ray, applied_rbx, applied_rby;
+  tb_f4 max_normal_impulse;
+} tb_wide_record;
 
 typedef struct tb_wide_contact {
   int32_t a[4], b[4];  /* solver bodies */
@@ -105,7 +109,7 @@ typedef struct tb_wide_contact {
   int32_t ends_asked;  /* the same bits: tb_contact_face_runs_on answered this step */
   int32_t pair;        /* +1: solved with the next block, -1: with the one before, 0: alone (see solve_pair) */
   int32_t isolated;    /* every lane's moving bodies have this contact alone: its relax solve iterates (solve_wide) */
-  int32_t cold_offset; /* blocks from this one to its cold part (cold_of) */
+  int32_t cold_offset; /* bytes from this block to its cold part (cold_of) */
   tb_f4 nx, ny, friction, tangent_speed;
   tb_f4 ma, ja, mb, jb; /* inverse masses and inertias of the solver bodies */
   tb_f4 bias_rate, mass_scale;
@@ -120,23 +124,40 @@ typedef struct tb_wide_contact {
  * capacity hot blocks, then capacity cold ones), so that a relax pass streams
  * only the hot blocks: with the cold half between them, the hardware
  * prefetchers pulled it in too (cold parts padded by 640 bytes more made
- * many_pyramids 1.25 times slower). Both parts have one size, so a block
- * finds its cold part cold_offset (the capacity) blocks on. */
+ * many_pyramids 1.25 times slower). A block finds its cold part
+ * cold_offset bytes on, and the cold part its extra part (tb_wide_extra)
+ * extra_offset bytes on. */
 typedef struct tb_wide_cold {
-  tb_f4 rolling_resistance, rolling_mass, rolling_impulse;
   tb_f4 shift_limit; /* how far (per axis) the arms follow the relative displacement (see arms_now) */
   /* the contact patch (tb_patch): how far B's incident core may slide along
    * the tangent before the features part, the normal distances from each
    * centre of mass to where that slide is measured, and the cores' radii */
   tb_f4 slide_min, slide_max, lever_a, lever_b, core_radius;
   int32_t contact[4]; /* each lane's contact (pool index), -1 in an unused lane */
+  int32_t extra_offset; /* bytes from this cold part to the block's extra part (extra_of) */
   tb_wide_anchor q[2];
-  tb_f4 unused; /* (to the hot block's size) */
 } tb_wide_cold;
-_Static_assert(sizeof(tb_wide_cold) == sizeof(tb_wide_contact), "cold_of steps in blocks of the hot block's size");
+
+/* What only blocks with rolling resistance (rolling) or restitution
+ * (bouncy) read, in a third array: prepare writes it for those blocks alone.
+ * Kept in the cold part, these 240 bytes a block were written and read for
+ * every block of a pile without either (the prepare's time follows the bytes
+ * it writes). */
+typedef struct tb_wide_extra {
+  tb_f4 rolling_resistance, rolling_mass, rolling_impulse;
+  tb_wide_record q[2];
+} tb_wide_extra;
 
 static inline __attribute__((always_inline)) tb_wide_cold* cold_of(const tb_wide_contact* c) {
-  return (tb_wide_cold*)(void*)(c + c->cold_offset);
+  return (tb_wide_cold*)(void*)((char*)(void*)c + c->cold_offset);
+}
+
+/* A block's three parts, in bytes (w->wide holds capacity of each). */
+#define BLOCK_BYTES (sizeof(tb_wide_contact) + sizeof(tb_wide_cold) + sizeof(tb_wide_extra))
+
+static inline __attribute__((always_inline)) tb_wide_extra* extra_of(const tb_wide_contact* c) {
+  tb_wide_cold* cold = cold_of(c);
+  return (tb_wide_extra*)(void*)((char*)cold + cold->extra_offset);
 }
 
 /* What a contact constraint keeps besides its lane: where the lane is, and
@@ -256,7 +277,14 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   static const tb_body no_body;
   const tb_contact* c[4];
   const tb_body *ba[4], *bb[4];
-  wc->cold_offset = w->wide_capacity; /* (see tb_wide_cold) */
+  { /* the three parts' arrays, one after the other (see tb_wide_cold) */
+    tb_wide_contact* hot = (tb_wide_contact*)w->wide;
+    tb_wide_cold* cold = (tb_wide_cold*)(void*)(hot + w->wide_capacity);
+    tb_wide_extra* extra = (tb_wide_extra*)(void*)(cold + w->wide_capacity);
+    ptrdiff_t b = wc - hot;
+    wc->cold_offset = (int32_t)((char*)&cold[b] - (char*)wc);
+    cold[b].extra_offset = (int32_t)((char*)&extra[b] - (char*)&cold[b]);
+  }
   for (int lane = 0; lane < 4; ++lane) {
     cold_of(wc)->contact[lane] = k[lane] >= 0 ? w->step_contacts[k[lane]] : -1;
     c[lane] = k[lane] >= 0 ? (const tb_contact*)tb_pool_at(&w->contacts, cold_of(wc)->contact[lane]) : &no_contact;
@@ -276,14 +304,16 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
   wc->ny = ny;
   wc->friction = LANES(c, friction);
   wc->tangent_speed = LANES(c, tangent_speed);
-  cold_of(wc)->rolling_resistance = rolling_resistance;
-  cold_of(wc)->rolling_mass = inverse_or_zero(ja + jb);
-  cold_of(wc)->rolling_impulse = ctx->enable_warm_starting ? LANES(c, rolling_impulse) : zero;
   tb_f4 restitution = LANES(c, restitution);
   wc->bouncy =
       (restitution[0] != 0.0f) | (restitution[1] != 0.0f) | (restitution[2] != 0.0f) | (restitution[3] != 0.0f);
   wc->rolling = (rolling_resistance[0] > 0.0f) | (rolling_resistance[1] > 0.0f) | (rolling_resistance[2] > 0.0f) |
                 (rolling_resistance[3] > 0.0f);
+  if (wc->rolling) {
+    extra_of(wc)->rolling_resistance = rolling_resistance;
+    extra_of(wc)->rolling_mass = inverse_or_zero(ja + jb);
+    extra_of(wc)->rolling_impulse = ctx->enable_warm_starting ? LANES(c, rolling_impulse) : zero;
+  }
   wc->ma = ma;
   wc->ja = ja;
   wc->mb = mb;
@@ -344,8 +374,11 @@ static void prepare_block(tb_world* w, const tb_step_context* ctx, const int32_t
     wq->base_separation = blend(used, LANES(c, manifold.points[p].separation) + residual_gap, one);
     wp->normal_impulse = blend(used, normal_impulse, zero);
     wp->tangent_impulse = blend(used, tangent_impulse, zero);
-    wq->max_normal_impulse = zero;
-    wq->applied = wq->applied_rax = wq->applied_ray = wq->applied_rbx = wq->applied_rby = zero;
+    if (wc->bouncy) {
+      tb_wide_record* r = &extra_of(wc)->q[p];
+      r->max_normal_impulse = zero;
+      r->applied = r->applied_rax = r->applied_ray = r->applied_rbx = r->applied_rby = zero;
+    }
     /* the common point (see arms_now): a vertex of B on an edge of A moves
      * with B (beta = 1), a vertex of A on an edge of B with A (beta = 0);
      * else, and against a body that impulses do not move, by the inverse
@@ -589,7 +622,7 @@ static bool lay_out_blocks(tb_world* w, const tb_step_context* ctx) {
     next_lane[c] = 4 * blocks;
     blocks += (in_color + 3) / 4;
   }
-  if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, 2 * sizeof(tb_wide_contact)) ||
+  if (!tb_array_reserve((void**)&w->wide, &w->wide_capacity, blocks + 1, BLOCK_BYTES) ||
       !tb_array_reserve((void**)&w->lane_contacts, &w->lane_contact_capacity, 4 * blocks + 1, sizeof(int32_t)) ||
       !tb_array_reserve((void**)&w->laid_out_contacts, &w->laid_out_capacity, count, sizeof(int32_t)))
     return false;
@@ -697,7 +730,7 @@ static inline __attribute__((always_inline)) wide_arms stored_arms(const tb_wide
 }
 
 /* Keeps count of a normal impulse applied at these arms (see restitution_targets). */
-static inline __attribute__((always_inline)) void count_normal(tb_wide_anchor* cp, const wide_arms* arms,
+static inline __attribute__((always_inline)) void count_normal(tb_wide_record* cp, const wide_arms* arms,
                                                                tb_f4 impulse) {
   cp->applied += impulse;
   cp->applied_rax += impulse * arms->rax;
@@ -730,14 +763,14 @@ static void warm_start_wide(tb_wide_contact* c, tb_solver_body* states) {
   for (int p = 0; p < 2; ++p) {
     tb_wide_point* cp = &c->p[p];
     wide_arms arms = stored_arms(cp);
-    if (c->bouncy) count_normal(&cold_of(c)->q[p], &arms, cp->normal_impulse);
+    if (c->bouncy) count_normal(&extra_of(c)->q[p], &arms, cp->normal_impulse);
     tb_f4 Px = cp->normal_impulse * c->nx + cp->tangent_impulse * tx;
     tb_f4 Py = cp->normal_impulse * c->ny + cp->tangent_impulse * ty;
     apply_impulse(c, &arms, Px, Py, &A, &B);
   }
   if (c->rolling) { /* (a block without rolling resistance holds no rolling impulse) */
-    A.w -= c->ja * cold_of(c)->rolling_impulse;
-    B.w += c->jb * cold_of(c)->rolling_impulse;
+    A.w -= c->ja * extra_of(c)->rolling_impulse;
+    B.w += c->jb * extra_of(c)->rolling_impulse;
   }
   scatter(states, c->a, &A);
   scatter(states, c->b, &B);
@@ -1010,10 +1043,11 @@ static inline __attribute__((always_inline)) bool solve_isolated_direct(tb_wide_
   apply_impulse(c, arms1, dn1 * nx + dt1 * tx, dn1 * ny + dt1 * ty, A, B);
   apply_impulse(c, arms2, dn2 * nx + dt2 * tx, dn2 * ny + dt2 * ty, A, B);
   if (c->bouncy) { /* restitution's record of the normal impulses (see solve_wide) */
-    count_normal(&cold_of(c)->q[0], arms1, dn1);
-    count_normal(&cold_of(c)->q[1], arms2, dn2);
-    cold_of(c)->q[0].max_normal_impulse = max4(cold_of(c)->q[0].max_normal_impulse, p1->normal_impulse);
-    cold_of(c)->q[1].max_normal_impulse = max4(cold_of(c)->q[1].max_normal_impulse, p2->normal_impulse);
+    tb_wide_record* r = extra_of(c)->q;
+    count_normal(&r[0], arms1, dn1);
+    count_normal(&r[1], arms2, dn2);
+    r[0].max_normal_impulse = max4(r[0].max_normal_impulse, p1->normal_impulse);
+    r[1].max_normal_impulse = max4(r[1].max_normal_impulse, p2->normal_impulse);
   }
   tb_i4 rest = ~ok & (cold_of(c)->q[0].live > zero); /* lanes with a contact left to the rounds */
   return !(rest[0] | rest[1] | rest[2] | rest[3]);
@@ -1084,15 +1118,15 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
     tb_f4 d1 = x1 - a1;
     apply_impulse(c, &arms1, d1 * c->nx, d1 * c->ny, &A, &B);
     if (c->bouncy) {
-      count_normal(&cold_of(c)->q[0], &arms1, d1);
-      cold_of(c)->q[0].max_normal_impulse = max4(cold_of(c)->q[0].max_normal_impulse, x1);
+      count_normal(&extra_of(c)->q[0], &arms1, d1);
+      extra_of(c)->q[0].max_normal_impulse = max4(extra_of(c)->q[0].max_normal_impulse, x1);
     }
     p2->normal_impulse = x2;
     tb_f4 d2 = x2 - a2;
     apply_impulse(c, &arms2, d2 * c->nx, d2 * c->ny, &A, &B);
     if (c->bouncy) {
-      count_normal(&cold_of(c)->q[1], &arms2, d2);
-      cold_of(c)->q[1].max_normal_impulse = max4(cold_of(c)->q[1].max_normal_impulse, x2);
+      count_normal(&extra_of(c)->q[1], &arms2, d2);
+      extra_of(c)->q[1].max_normal_impulse = max4(extra_of(c)->q[1].max_normal_impulse, x2);
     }
     /* the normal speed each point's change made (its own K_ii; the coupling
      * term is left out), for the relax passes' stop */
@@ -1103,11 +1137,12 @@ static inline __attribute__((always_inline)) void solve_wide(tb_wide_contact* c,
      * order as the tangent one): the relax passes' record (relax_activity.h) */
     moved = max4(normal_change, max4(max4(f1, -f1) * c->k11, max4(f2, -f2) * c->k22));
     if (c->rolling) {
-      tb_f4 limit = cold_of(c)->rolling_resistance * (x1 + x2);
-      tb_f4 impulse = -cold_of(c)->rolling_mass * (B.w - A.w);
-      tb_f4 total = min4(max4(cold_of(c)->rolling_impulse + impulse, -limit), limit);
-      impulse = total - cold_of(c)->rolling_impulse;
-      cold_of(c)->rolling_impulse = total;
+      tb_wide_extra* e = extra_of(c);
+      tb_f4 limit = e->rolling_resistance * (x1 + x2);
+      tb_f4 impulse = -e->rolling_mass * (B.w - A.w);
+      tb_f4 total = min4(max4(e->rolling_impulse + impulse, -limit), limit);
+      impulse = total - e->rolling_impulse;
+      e->rolling_impulse = total;
       A.w -= c->ja * impulse;
       B.w += c->jb * impulse;
     }
@@ -1190,8 +1225,6 @@ AVX2_INLINE void relative_velocity8(const wide_arms8* r, const wide_body8* A, co
 AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_context* ctx, bool use_bias, bool record,
                             tb_f8* change) {
 #define BOTH(field) join(c0->field, c1->field)
-#define COLD_BOTH(field) join(cold_of(c0)->field, cold_of(c1)->field)
-#define COLD_STORE(field, v) (cold_of(c0)->field = low_half(v), cold_of(c1)->field = high_half(v))
 #define STORE(field, v) (c0->field = low_half(v), c1->field = high_half(v))
   tb_solver_body* states = ctx->states;
   float inv_h = ctx->inv_h, push = ctx->contact_push_max_velocity;
@@ -1249,8 +1282,9 @@ AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_co
       tb_wide_contact* half[2] = {c0, c1};
       for (int h = 0; h < 2; ++h)
         if (half[h]->bouncy) {
-          count_normal(&cold_of(half[h])->q[q], &now[h], step[h]);
-          cold_of(half[h])->q[q].max_normal_impulse = max4(cold_of(half[h])->q[q].max_normal_impulse, total[h]);
+          tb_wide_record* r = &extra_of(half[h])->q[q];
+          count_normal(r, &now[h], step[h]);
+          r->max_normal_impulse = max4(r->max_normal_impulse, total[h]);
         }
     }
   }
@@ -1275,23 +1309,28 @@ AVX2_INLINE void solve_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_step_co
     note_lanes(ctx, c0, low_mask(noted));
     note_lanes(ctx, c1, high_mask(noted));
   }
-  if (c0->rolling | c1->rolling) { /* in the blocks that roll, as solve_wide */
-    int32_t roll0 = c0->rolling ? -1 : 0, roll1 = c1->rolling ? -1 : 0;
-    tb_i8 rolls = {roll0, roll0, roll0, roll0, roll1, roll1, roll1, roll1};
-    tb_f8 held = COLD_BOTH(rolling_impulse), limit = COLD_BOTH(rolling_resistance) * (x1 + x2);
-    tb_f8 impulse = -COLD_BOTH(rolling_mass) * (B.w - A.w);
-    tb_f8 total = min8(max8(held + impulse, -limit), limit);
-    impulse = total - held;
-    COLD_STORE(rolling_impulse, blend8(rolls, total, held));
-    A.w = blend8(rolls, A.w - ja * impulse, A.w);
-    B.w = blend8(rolls, B.w + jb * impulse, B.w);
+  if (c0->rolling | c1->rolling) { /* in the blocks that roll, as solve_wide, each half on its own */
+    tb_wide_contact* half[2] = {c0, c1};
+    tb_f4 aw[2] = {low_half(A.w), high_half(A.w)}, bw[2] = {low_half(B.w), high_half(B.w)};
+    tb_f4 load[2] = {low_half(x1 + x2), high_half(x1 + x2)};
+    for (int h = 0; h < 2; ++h) {
+      if (!half[h]->rolling) continue;
+      tb_wide_extra* e = extra_of(half[h]);
+      tb_f4 limit = e->rolling_resistance * load[h];
+      tb_f4 impulse = -e->rolling_mass * (bw[h] - aw[h]);
+      tb_f4 total = min4(max4(e->rolling_impulse + impulse, -limit), limit);
+      impulse = total - e->rolling_impulse;
+      e->rolling_impulse = total;
+      aw[h] -= half[h]->ja * impulse;
+      bw[h] += half[h]->jb * impulse;
+    }
+    A.w = join(aw[0], aw[1]);
+    B.w = join(bw[0], bw[1]);
   }
   scatter8(states, c0->a, c1->a, &A);
   scatter8(states, c0->b, c1->b, &B);
 #undef BOTH
 #undef STORE
-#undef COLD_BOTH
-#undef COLD_STORE
 }
 
 /* warm_start_wide for blocks c0 and c1 of one colour */
@@ -1304,10 +1343,10 @@ static AVX2 void warm_start_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_so
     wide_arms8 arms = {join(p0->now_rax, p1->now_rax), join(p0->now_ray, p1->now_ray), join(p0->now_rbx, p1->now_rbx),
                        join(p0->now_rby, p1->now_rby)};
     if (c0->bouncy)
-      count_normal(&cold_of(c0)->q[q], &(wide_arms){p0->now_rax, p0->now_ray, p0->now_rbx, p0->now_rby},
+      count_normal(&extra_of(c0)->q[q], &(wide_arms){p0->now_rax, p0->now_ray, p0->now_rbx, p0->now_rby},
                    p0->normal_impulse);
     if (c1->bouncy)
-      count_normal(&cold_of(c1)->q[q], &(wide_arms){p1->now_rax, p1->now_ray, p1->now_rbx, p1->now_rby},
+      count_normal(&extra_of(c1)->q[q], &(wide_arms){p1->now_rax, p1->now_ray, p1->now_rbx, p1->now_rby},
                    p1->normal_impulse);
     tb_f8 normal = join(p0->normal_impulse, p1->normal_impulse),
           tangent = join(p0->tangent_impulse, p1->tangent_impulse);
@@ -1316,7 +1355,10 @@ static AVX2 void warm_start_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_so
     apply8(ma, ja, mb, jb, &arms, Px, Py, &A, &B);
   }
   if (c0->rolling | c1->rolling) {
-    tb_f8 rolling = join(cold_of(c0)->rolling_impulse, cold_of(c1)->rolling_impulse);
+    /* (a block without rolling resistance holds no rolling impulse) */
+    tb_f4 none = splat(0.0f);
+    tb_f8 rolling = join(c0->rolling ? extra_of(c0)->rolling_impulse : none,
+                         c1->rolling ? extra_of(c1)->rolling_impulse : none);
     A.w -= ja * rolling;
     B.w += jb * rolling;
   }
@@ -1571,7 +1613,7 @@ void tb_contact_solver_reset(tb_world* w) {
   const tb_f4 zero = splat(0.0f);
   for (int b = 0; b < w->wide_count; ++b) {
     for (int p = 0; p < 2; ++p) wide[b].p[p].normal_impulse = wide[b].p[p].tangent_impulse = zero;
-    cold_of(&wide[b])->rolling_impulse = zero;
+    if (wide[b].rolling) extra_of(&wide[b])->rolling_impulse = zero;
   }
 }
 
@@ -1676,9 +1718,10 @@ static int restitution_targets(const tb_contact_constraint* cc, const tb_wide_co
   tb_vec2 n = {wc->nx[lane], wc->ny[lane]};
   for (int p = 0; p < cc->point_count; ++p) {
     const tb_wide_point* cp = &wc->p[p];
-    const tb_wide_anchor* cq = &cold_of(wc)->q[p];
+    const tb_wide_record* cq = &extra_of(wc)->q[p];
     if (cq->max_normal_impulse[lane] == 0.0f || !(cp->normal_mass[lane] > 0.0f)) continue;
-    tb_vec2 ra0 = {cq->rax[lane], cq->ray[lane]}, rb0 = {cq->rbx[lane], cq->rby[lane]};
+    const tb_wide_anchor* anchor = &cold_of(wc)->q[p];
+    tb_vec2 ra0 = {anchor->rax[lane], anchor->ray[lane]}, rb0 = {anchor->rbx[lane], anchor->rby[lane]};
     float applied = cq->applied[lane];
     tb_vec2 rea = ra0, reb = rb0;
     if (applied > 0.0f) {
@@ -1788,7 +1831,10 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
       c->manifold.points[p].normal_impulse = wc->p[p].normal_impulse[lane];
       c->manifold.points[p].tangent_impulse = wc->p[p].tangent_impulse[lane];
     }
-    c->rolling_impulse = cold_of(wc)->rolling_impulse[lane];
+    /* (a block without rolling resistance changed no rolling impulse: prepare
+     * took the contact's, or zero without warm starting) */
+    c->rolling_impulse =
+        wc->rolling ? extra_of(wc)->rolling_impulse[lane] : ctx->enable_warm_starting ? c->rolling_impulse : 0.0f;
   }
 }
 
@@ -1799,7 +1845,7 @@ size_t tb_contact_solver_bytes(const tb_world* w) {
          (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->degree_capacity +
          (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts +
          (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts +
-         (size_t)w->wide_capacity * 2 * sizeof(tb_wide_contact) + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
+         (size_t)w->wide_capacity * BLOCK_BYTES + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
          (size_t)w->bounce_capacity * sizeof(tb_bounce) + (size_t)w->push_capacity * sizeof *w->push_velocities;
 }
 
@@ -1809,7 +1855,7 @@ void tb_contact_solver_free(tb_world* w) {
   tb_mem_free(w->lane_contacts, (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts);
   tb_mem_free(w->laid_out_contacts, (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts);
   tb_mem_free(w->contact_degree, (size_t)w->degree_capacity);
-  tb_mem_free(w->wide, (size_t)w->wide_capacity * 2 * sizeof(tb_wide_contact));
+  tb_mem_free(w->wide, (size_t)w->wide_capacity * BLOCK_BYTES);
   tb_mem_free(w->deep_contacts, (size_t)w->deep_capacity * sizeof(tb_deep_block));
   tb_mem_free(w->bounces, (size_t)w->bounce_capacity * sizeof(tb_bounce));
   tb_mem_free(w->push_velocities, (size_t)w->push_capacity * sizeof *w->push_velocities);
