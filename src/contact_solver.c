@@ -140,9 +140,9 @@ typedef struct tb_wide_cold {
 
 /* What only blocks with rolling resistance (rolling) or restitution
  * (bouncy) read, in a third array: prepare writes it for those blocks alone.
- * Kept in the cold part, these 240 bytes a block were written and read for
- * every block of a pile without either (the prepare's time follows the bytes
- * it writes). */
+ * Kept in the cold part, these 240 bytes a block were written by prepare and
+ * streamed by every measuring pass for every block of a pile without either
+ * (many_pyramids' solver stage 0.93 to 0.96x without them). */
 typedef struct tb_wide_extra {
   tb_f4 rolling_resistance, rolling_mass, rolling_impulse;
   tb_wide_record q[2];
