@@ -85,9 +85,9 @@ typedef struct tb_wide_point {
 } tb_wide_point;
 
 typedef struct tb_wide_anchor {
-  tb_f4 rax, ray, rbx, rby; /* anchors from each centre of mass, world-oriented, at step start */
-  tb_f4 live;               /* 1 for a point of the manifold, 0 for an inert one */
-  tb_f4 base_separation;    /* s0, the separation at the step start */
+  tb_f4 rax, ray, rbx, rby;  /* anchors from each centre of mass, world-oriented, at step start */
+  tb_f4 live;                /* 1 for a point of the manifold, 0 for an inert one */
+  tb_f4 base_separation;     /* s0, the separation at the step start */
   tb_f4 shift_a, shift_b;    /* the common point's share of the relative displacement, per arm (see arms_now) */
   tb_f4 collided_separation; /* s0 as collided; base_separation differs past the patch's end (measure_slide) */
 } tb_wide_anchor;
@@ -133,7 +133,7 @@ typedef struct tb_wide_cold {
    * the tangent before the features part, the normal distances from each
    * centre of mass to where that slide is measured, and the cores' radii */
   tb_f4 slide_min, slide_max, lever_a, lever_b, core_radius;
-  int32_t contact[4]; /* each lane's contact (pool index), -1 in an unused lane */
+  int32_t contact[4];   /* each lane's contact (pool index), -1 in an unused lane */
   int32_t extra_offset; /* bytes from this cold part to the block's extra part (extra_of) */
   tb_wide_anchor q[2];
 } tb_wide_cold;
@@ -1357,8 +1357,8 @@ static AVX2 void warm_start_pair(tb_wide_contact* c0, tb_wide_contact* c1, tb_so
   if (c0->rolling | c1->rolling) {
     /* (a block without rolling resistance holds no rolling impulse) */
     tb_f4 none = splat(0.0f);
-    tb_f8 rolling = join(c0->rolling ? extra_of(c0)->rolling_impulse : none,
-                         c1->rolling ? extra_of(c1)->rolling_impulse : none);
+    tb_f8 rolling =
+        join(c0->rolling ? extra_of(c0)->rolling_impulse : none, c1->rolling ? extra_of(c1)->rolling_impulse : none);
     A.w -= ja * rolling;
     B.w += jb * rolling;
   }
@@ -1833,8 +1833,9 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
     }
     /* (a block without rolling resistance changed no rolling impulse: prepare
      * took the contact's, or zero without warm starting) */
-    c->rolling_impulse =
-        wc->rolling ? extra_of(wc)->rolling_impulse[lane] : ctx->enable_warm_starting ? c->rolling_impulse : 0.0f;
+    c->rolling_impulse = wc->rolling                 ? extra_of(wc)->rolling_impulse[lane]
+                         : ctx->enable_warm_starting ? c->rolling_impulse
+                                                     : 0.0f;
   }
 }
 
@@ -1844,9 +1845,9 @@ size_t tb_contact_solver_bytes(const tb_world* w) {
   return (size_t)w->constraint_capacity * sizeof(tb_contact_constraint) +
          (size_t)w->color_capacity * sizeof *w->color_lanes + (size_t)w->degree_capacity +
          (size_t)w->lane_contact_capacity * sizeof *w->lane_contacts +
-         (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts +
-         (size_t)w->wide_capacity * BLOCK_BYTES + (size_t)w->deep_capacity * sizeof(tb_deep_block) +
-         (size_t)w->bounce_capacity * sizeof(tb_bounce) + (size_t)w->push_capacity * sizeof *w->push_velocities;
+         (size_t)w->laid_out_capacity * sizeof *w->laid_out_contacts + (size_t)w->wide_capacity * BLOCK_BYTES +
+         (size_t)w->deep_capacity * sizeof(tb_deep_block) + (size_t)w->bounce_capacity * sizeof(tb_bounce) +
+         (size_t)w->push_capacity * sizeof *w->push_velocities;
 }
 
 void tb_contact_solver_free(tb_world* w) {
