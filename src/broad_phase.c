@@ -147,6 +147,12 @@ static float shape_margin(const tb_shape* s, tb_body_type type) {
   return tb_minf(tb_maxf(0.125f * extent, floor), tb_units.aabb_margin);
 }
 
+/* The shape's apart key in the trees (tb_tree_query_apart): what never pairs
+ * with it, whatever else it is. Shapes of one negative group never collide
+ * (tb_filters_collide), nor do shapes of one body (should_pair): the group when
+ * it is negative, else the body (+1, so that 0 stays "none"). */
+static int32_t apart_key(const tb_shape* s) { return s->filter.group_index < 0 ? s->filter.group_index : s->body + 1; }
+
 bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
   tb_shape* s = tb_shape_at(w, shape_index);
   const tb_body* b = tb_body_at(w, s->body);
@@ -156,7 +162,7 @@ bool tb_broad_phase_create_proxy(tb_world* w, int shape_index) {
   w->broad_phase.keys[shape_index] =
       (tb_proxy_key){.body = s->body, .group = s->filter.group_index, .tree = (uint8_t)s->tree, .moved = 0};
   s->proxy = tb_tree_create_proxy_with_margin(&w->broad_phase.trees[s->tree], s->aabb, s->margin,
-                                              s->filter.category_bits, shape_index);
+                                              s->filter.category_bits, apart_key(s), shape_index);
   if (s->proxy == TB_TREE_NULL) return false;
   s->fat_aabb = tb_tree_get_fat_aabb(&w->broad_phase.trees[s->tree], s->proxy);
   if (!queue_move(w, shape_index)) {
@@ -195,6 +201,7 @@ bool tb_broad_phase_refilter_proxy(tb_world* w, int shape_index) {
   tb_shape* s = tb_shape_at(w, shape_index);
   if (s->proxy < 0) return true;
   (void)tb_tree_set_category_bits(&w->broad_phase.trees[s->tree], s->proxy, s->filter.category_bits);
+  (void)tb_tree_set_apart_key(&w->broad_phase.trees[s->tree], s->proxy, apart_key(s));
   w->broad_phase.keys[shape_index].group = s->filter.group_index;
   return queue_move(w, shape_index);
 }
@@ -306,10 +313,11 @@ void tb_broad_phase_update_pairs(tb_world* w) {
      * once); but a shared positive group collides whatever the bits say, so a
      * shape with a positive group looks at all. */
     uint64_t mask = s->filter.group_index > 0 ? UINT64_MAX : s->filter.mask_bits;
-    tb_tree_query(&bp->trees[TB_DYNAMIC_BODY], fat, mask, pair_callback, &q);
+    int32_t key = apart_key(s);
+    tb_tree_query_apart(&bp->trees[TB_DYNAMIC_BODY], fat, mask, key, pair_callback, &q);
     if (s->tree == TB_DYNAMIC_BODY) {
-      tb_tree_query(&bp->trees[TB_KINEMATIC_BODY], fat, mask, pair_callback, &q);
-      tb_tree_query(&bp->trees[TB_STATIC_BODY], fat, mask, pair_callback, &q);
+      tb_tree_query_apart(&bp->trees[TB_KINEMATIC_BODY], fat, mask, key, pair_callback, &q);
+      tb_tree_query_apart(&bp->trees[TB_STATIC_BODY], fat, mask, key, pair_callback, &q);
     }
   }
   for (int i = 0; i < bp->move_count; ++i)

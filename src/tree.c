@@ -138,6 +138,7 @@ static inline void refit(tb_tree_node* n, int32_t i) {
   a->aabb = aabb_union(c1->aabb, c2->aabb);
   a->height = 1 + (c1->height > c2->height ? c1->height : c2->height);
   a->category_bits = c1->category_bits | c2->category_bits;
+  a->apart_key = c1->apart_key == c2->apart_key ? c1->apart_key : 0;
 }
 
 static inline void replace_child(tb_tree_node* n, int32_t parent, int32_t old_child, int32_t new_child) {
@@ -268,7 +269,7 @@ static void rotate(tb_tree_node* n, int32_t a) {
 }
 
 /* Rebalances and refits i and its ancestors. Above a node that comes out with
- * the same box, height and category bits, nothing changed: stop there (the
+ * the same box, height, category bits and apart key, nothing changed: stop there (the
  * ancestors keep their balance; they only miss an optional area rotation). */
 static void walk_up(tb_tree* t, int32_t i) {
   tb_tree_node* n = t->nodes;
@@ -277,9 +278,12 @@ static void walk_up(tb_tree* t, int32_t i) {
     tb_aabb box = n[i].aabb;
     int height = n[i].height;
     uint64_t bits = n[i].category_bits;
+    int32_t key = n[i].apart_key;
     rotate(n, i);
     refit(n, i);
-    if (!first && aabb_equal(box, n[i].aabb) && height == n[i].height && bits == n[i].category_bits) break;
+    if (!first && aabb_equal(box, n[i].aabb) && height == n[i].height && bits == n[i].category_bits &&
+        key == n[i].apart_key)
+      break;
     first = false;
     i = n[i].parent;
   }
@@ -428,11 +432,11 @@ bool tb_tree_is_proxy(const tb_tree* tree, int32_t proxy) {
 
 int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits, int32_t user_id) {
   if (tree == NULL) return TB_TREE_NULL;
-  return tb_tree_create_proxy_with_margin(tree, aabb, tree->margin, category_bits, user_id);
+  return tb_tree_create_proxy_with_margin(tree, aabb, tree->margin, category_bits, 0, user_id);
 }
 
 int32_t tb_tree_create_proxy_with_margin(tb_tree* tree, tb_aabb aabb, float margin, uint64_t category_bits,
-                                         int32_t user_id) {
+                                         int32_t apart_key, int32_t user_id) {
   if (tree == NULL || !aabb_ok(aabb) || !tb_length_ok(margin) || margin < 0.0f) return TB_TREE_NULL;
   tb_tree_rebuild_enlarged(tree); /* insertions and rotations need exact boxes */
   if (!reserve_nodes(tree, 2)) return TB_TREE_NULL;
@@ -440,6 +444,7 @@ int32_t tb_tree_create_proxy_with_margin(tb_tree* tree, tb_aabb aabb, float marg
   tb_tree_node* n = &tree->nodes[leaf];
   n->aabb = fat_aabb(aabb, margin, (tb_vec2){0.0f, 0.0f});
   n->category_bits = category_bits;
+  n->apart_key = apart_key;
   n->user_id = user_id;
   n->height = 0;
   insert_leaf(tree, leaf, TB_TREE_CREATE_BUDGET, TB_TREE_NULL);
@@ -539,6 +544,18 @@ bool tb_tree_set_category_bits(tb_tree* tree, int32_t proxy, uint64_t category_b
   return true;
 }
 
+bool tb_tree_set_apart_key(tb_tree* tree, int32_t proxy, int32_t apart_key) {
+  if (!tb_tree_is_proxy(tree, proxy)) return false;
+  tb_tree_node* n = tree->nodes;
+  n[proxy].apart_key = apart_key;
+  for (int32_t i = n[proxy].parent; i != TB_TREE_NULL; i = n[i].parent) {
+    int32_t k1 = n[n[i].child1].apart_key, key = k1 == n[n[i].child2].apart_key ? k1 : 0;
+    if (key == n[i].apart_key) break;
+    n[i].apart_key = key;
+  }
+  return true;
+}
+
 /* ---------------------------------------------------------------- queries -- */
 
 /* A stack of node indices in the caller's array (local, on the C stack)
@@ -567,7 +584,7 @@ static __attribute__((noinline)) node_stack stack_grown(node_stack s, const int3
   return (node_stack){items, s.count, cap};
 }
 
-static inline bool stack_push(node_stack* s, const int32_t* local, int32_t v) {
+static inline __attribute__((always_inline)) bool stack_push(node_stack* s, const int32_t* local, int32_t v) {
   if (__builtin_expect(s->count == s->capacity, 0)) {
     *s = stack_grown(*s, local);
     if (s->items == NULL) return false;
@@ -576,13 +593,21 @@ static inline bool stack_push(node_stack* s, const int32_t* local, int32_t v) {
   return true;
 }
 
-tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tree_query_fn* fn, void* context) {
+/* Whether a query that keeps apart the proxies of `key` (when apart) takes node c. */
+#define KEPT(c) (!apart || (c)->apart_key != key)
+
+/* The query; apart is a constant in each caller. The apart key is tested on
+ * the nodes the walk takes (popped, or a leaf reported at once), not on every
+ * child it looks at: half the tests, for the scenes with nothing to skip. */
+static inline __attribute__((always_inline)) tb_result query(const tb_tree* tree, tb_aabb aabb, uint64_t mask,
+                                                             bool apart, int32_t key, tb_tree_query_fn* fn,
+                                                             void* context) {
   if (tree == NULL || fn == NULL) return TB_ERR_NULL_ARGUMENT;
   if (!tb_vec_finite(aabb.lower) || !tb_vec_finite(aabb.upper)) return TB_ERR_INVALID_ARGUMENT;
   if (tree->root == TB_TREE_NULL) return TB_OK;
   const tb_tree_node* n = tree->nodes;
   const tb_tree_node* root = &n[tree->root];
-  if ((root->category_bits & mask) == 0 || !aabb_overlaps(root->aabb, aabb)) return TB_OK;
+  if ((root->category_bits & mask) == 0 || !KEPT(root) || !aabb_overlaps(root->aabb, aabb)) return TB_OK;
   if (is_leaf(root)) {
     (void)fn(tree->root, root->user_id, context);
     return TB_OK;
@@ -601,6 +626,7 @@ tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tre
   while (stack.count > 0) {
     int32_t index = stack.items[--stack.count];
     const tb_tree_node* node = &n[index];
+    if (!KEPT(node)) continue;
     if (is_leaf(node)) {
       if (!fn(index, node->user_id, context)) break;
       continue;
@@ -615,7 +641,7 @@ tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tre
     }
     if (!in1) continue;
     if (is_leaf(c1)) {
-      if (!fn(i1, c1->user_id, context)) break;
+      if (KEPT(c1) && !fn(i1, c1->user_id, context)) break;
     } else if (!stack_push(&stack, local, i1)) {
       result = TB_ERR_OUT_OF_MEMORY;
       break;
@@ -623,6 +649,17 @@ tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tre
   }
   stack_free(stack, local);
   return result;
+}
+#undef KEPT
+
+tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tree_query_fn* fn, void* context) {
+  return query(tree, aabb, mask, false, 0, fn, context);
+}
+
+tb_result tb_tree_query_apart(const tb_tree* tree, tb_aabb aabb, uint64_t mask, int32_t apart_key, tb_tree_query_fn* fn,
+                              void* context) {
+  if (apart_key == 0) return tb_tree_query(tree, aabb, mask, fn, context);
+  return query(tree, aabb, mask, true, apart_key, fn, context);
 }
 
 /* The segment with the reciprocals of its direction precomputed. An axis along
@@ -821,6 +858,7 @@ bool tb_tree_validate(const tb_tree* tree) {
            n[c2].parent == i && n[c1].height >= 0 && n[c2].height >= 0 &&
            a->height == 1 + max_i(n[c1].height, n[c2].height) &&
            a->category_bits == (n[c1].category_bits | n[c2].category_bits) &&
+           a->apart_key == (n[c1].apart_key == n[c2].apart_key ? n[c1].apart_key : 0) &&
            (a->enlarged || aabb_equal(a->aabb, aabb_union(n[c1].aabb, n[c2].aabb))) &&
            aabb_contains(a->aabb, n[c1].aabb) && aabb_contains(a->aabb, n[c2].aabb);
       /* a marked node's ancestors are marked (tb_tree_enlarge_proxy stops there) */

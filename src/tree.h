@@ -40,8 +40,11 @@ typedef struct tb_tree_node {
   int32_t parent;         /* TB_TREE_NULL at the root; next free node when free */
   int32_t child1, child2; /* TB_TREE_NULL in a leaf */
   int32_t user_id;        /* leaf only */
-  int32_t height;         /* 0: leaf, -1: free */
-  uint8_t enlarged;       /* internal: grown by tb_tree_enlarge_proxy since the last rebuild */
+  /* leaf: the proxy's apart key (0: none); internal: the key all its leaves
+   * share, else 0. A query with that key skips the subtree (tb_tree_query_apart). */
+  int32_t apart_key;
+  int16_t height;   /* 0: leaf, -1: free */
+  uint8_t enlarged; /* internal: grown by tb_tree_enlarge_proxy since the last rebuild */
 } tb_tree_node;
 
 /* A unit of a rebuild: a leaf or a subtree kept whole, with its box copied
@@ -99,9 +102,10 @@ int tb_dynamic_tree_live_count(void);
 /* Insert a proxy for a tight AABB (finite, lower <= upper, within TB_MAX_LENGTH).
  * Returns its id, or TB_TREE_NULL on bad input or when out of memory. */
 int32_t tb_tree_create_proxy(tb_tree* tree, tb_aabb aabb, uint64_t category_bits, int32_t user_id);
-/* The same with the proxy's own fattening margin (>= 0) instead of the tree's. */
+/* The same with the proxy's own fattening margin (>= 0) instead of the tree's,
+ * and an apart key (0: none; see tb_tree_query_apart). */
 int32_t tb_tree_create_proxy_with_margin(tb_tree* tree, tb_aabb aabb, float margin, uint64_t category_bits,
-                                         int32_t user_id);
+                                         int32_t apart_key, int32_t user_id);
 /* False (and nothing done) when proxy is not a live proxy of this tree. */
 /* Room for proxies more, so that as many tb_tree_create_proxy calls cannot run
  * out of memory; false when out of memory. */
@@ -141,12 +145,21 @@ int32_t tb_tree_get_user_id(const tb_tree* tree, int32_t proxy);
 /* 0 for a bad proxy. */
 uint64_t tb_tree_get_category_bits(const tb_tree* tree, int32_t proxy);
 bool tb_tree_set_category_bits(tb_tree* tree, int32_t proxy, uint64_t category_bits);
+/* False (nothing done) for a bad proxy. */
+bool tb_tree_set_apart_key(tb_tree* tree, int32_t proxy, int32_t apart_key);
 
 /* Calls fn for every proxy with (category_bits & mask) != 0 whose fat AABB
  * overlaps aabb (touching counts). Errors: TB_ERR_NULL_ARGUMENT (tree or fn),
  * TB_ERR_INVALID_ARGUMENT (bad box), TB_ERR_OUT_OF_MEMORY (the traversal stack
  * could not grow; the query stopped early). */
 tb_result tb_tree_query(const tb_tree* tree, tb_aabb aabb, uint64_t mask, tb_tree_query_fn* fn, void* context);
+/* tb_tree_query without the proxies whose apart key is apart_key (!= 0; 0
+ * skips nothing): the subtrees whose leaves all carry it are not entered. The
+ * broad phase keys a shape by what can never pair with it (its negative
+ * group, else its body), so that a ragdoll's limb or a chain link does not
+ * walk down to its own kind's leaves. */
+tb_result tb_tree_query_apart(const tb_tree* tree, tb_aabb aabb, uint64_t mask, int32_t apart_key, tb_tree_query_fn* fn,
+                              void* context);
 /* Calls fn for the proxies (category_bits & mask) != 0 whose fat AABB the segment
  * touches, nearer boxes first (by entry fraction, per subtree; not a global
  * sort). Errors as tb_tree_query; also a non-finite input or max_fraction < 0. */

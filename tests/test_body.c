@@ -219,6 +219,34 @@ START_TEST(filter_change_refinds_pairs) {
 }
 END_TEST
 
+/* A negative group keeps its shapes apart, and the broad phase skips the parts
+ * of its trees that hold one group alone (tb_tree_query_apart): a column of
+ * boxes of one group has no contacts; taking the middle box out of the group
+ * brings back its two, and putting it back ends them. */
+START_TEST(group_change_refinds_pairs) {
+  tb_world_id w = tbt_world(0.0f, 0.0f);
+  tb_body_id boxes[5];
+  tb_shape_id shapes[5];
+  tb_filter group = tb_default_filter();
+  group.group_index = -3;
+  for (int i = 0; i < 5; ++i) {
+    boxes[i] = tbt_box_body(w, 0.0f, 0.9f * (float)i, 0.5f, 0.5f);
+    ck_assert_int_eq(tb_body_get_shapes(boxes[i], &shapes[i], 1), 1);
+    ck_assert_int_eq(tb_shape_set_filter(shapes[i], group), TB_OK);
+  }
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  for (int i = 0; i < 5; ++i) ck_assert_int_eq(tb_body_get_contact_capacity(boxes[i]), 0);
+  ck_assert_int_eq(tb_shape_set_filter(shapes[2], tb_default_filter()), TB_OK);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  const int touched[5] = {0, 1, 2, 1, 0};
+  for (int i = 0; i < 5; ++i) ck_assert_int_eq(tb_body_get_contact_capacity(boxes[i]), touched[i]);
+  ck_assert_int_eq(tb_shape_set_filter(shapes[2], group), TB_OK);
+  tb_world_step(w, 1.0f / 60.0f, 4);
+  for (int i = 0; i < 5; ++i) ck_assert_int_eq(tb_body_get_contact_capacity(boxes[i]), 0);
+  tb_destroy_world(w);
+}
+END_TEST
+
 /* A body placed on the edge of the world (its origin at TB_MAX_LENGTH) has a
  * box that reaches beyond it. A change that must insert its shapes anew is
  * refused with a message that says why, and leaves the world as it was; a
@@ -350,6 +378,7 @@ static Suite* body_suite(void) {
   tcase_add_test(tc, world_table_and_settings);
   tcase_add_test(tc, deterministic_hash);
   tcase_add_test(tc, filter_change_refinds_pairs);
+  tcase_add_test(tc, group_change_refinds_pairs);
   tcase_add_test(tc, body_beyond_max_length);
   tcase_add_test(tc, bodies_stop_at_the_edge_of_the_world);
   tcase_add_test(tc, derived_getters_stay_within_max_value);

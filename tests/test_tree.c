@@ -72,7 +72,8 @@ static void expect_same_sets(id_list* got, id_list* want, const char* what, int 
 typedef struct model {
   int32_t proxy[2 * N_PROXIES];
   tb_aabb tight[2 * N_PROXIES];
-  int count; /* slots used; proxy -1: destroyed */
+  int32_t key[2 * N_PROXIES]; /* apart key */
+  int count;                  /* slots used; proxy -1: destroyed */
 } model;
 
 /* check's assertions are costly in hot loops (each marks a point through a
@@ -112,8 +113,9 @@ static tb_tree_ray_input random_ray(unsigned* rng) {
   return ray;
 }
 
-/* 100 box queries (some with a category mask) and 100 ray casts, each compared
- * with a scan of every live proxy's fat AABB. */
+/* 100 box queries (some with a category mask), 100 of them again keeping apart
+ * the key of a proxy near the box, and 100 ray casts, each compared with a scan
+ * of every live proxy's fat AABB. */
 static void check_against_brute_force(const tb_tree* tree, const model* m, unsigned seed) {
   ck_assert(tb_tree_validate(tree));
   unsigned rng = seed;
@@ -144,6 +146,19 @@ static void check_against_brute_force(const tb_tree* tree, const model* m, unsig
       if ((tb_tree_get_category_bits(tree, p) & mask) != 0 && overlaps(fat, query)) list_add(&want, p);
     }
     expect_same_sets(&got, &want, "query", q);
+    /* the same box, without the proxies of one key (the first found's, or a
+     * key held by none): as many subtrees as hold that key alone are skipped */
+    int32_t key = want.count > 0 ? m->key[tb_tree_get_user_id(tree, want.ids[0])] : 1000;
+    got.count = want.count = 0;
+    ck_assert_int_eq(tb_tree_query_apart(tree, query, mask, key, collect_query, &ctx), TB_OK);
+    ck_assert_int_eq(ctx.bad_user_ids, 0);
+    for (int i = 0; i < m->count; ++i) {
+      int32_t p = m->proxy[i];
+      if (p < 0 || m->key[i] == key) continue;
+      if ((tb_tree_get_category_bits(tree, p) & mask) != 0 && overlaps(tb_tree_get_fat_aabb(tree, p), query))
+        list_add(&want, p);
+    }
+    expect_same_sets(&got, &want, "apart query", q);
   }
   for (int r = 0; r < 100; ++r) {
     tb_tree_ray_input ray = random_ray(&rng);
@@ -162,10 +177,14 @@ static void check_against_brute_force(const tb_tree* tree, const model* m, unsig
   free(want.ids);
 }
 
+/* Apart keys by where a proxy was made (bands 20 m wide, negative in the upper
+ * half), so that whole subtrees share one (as a ragdoll's limbs do). */
 static void model_add(tb_tree* tree, model* m, tb_aabb box, uint64_t bits) {
   int slot = m->count++;
   m->tight[slot] = box;
-  m->proxy[slot] = tb_tree_create_proxy(tree, box, bits, slot);
+  int32_t band = 1 + (int32_t)(box.lower.x / 20.0f);
+  m->key[slot] = box.lower.y > 0.5f * WORLD ? -band : band;
+  m->proxy[slot] = tb_tree_create_proxy_with_margin(tree, box, MARGIN, bits, m->key[slot], slot);
   if (m->proxy[slot] < 0) ck_abort_msg("create_proxy failed");
 }
 
@@ -254,9 +273,12 @@ START_TEST(queries_match_brute_force) {
   check_against_brute_force(&tree, &m, 14);
   check_height(&tree, "after removals");
 
-  /* category bits changed in place keep the internal ORs right */
+  /* category bits and apart keys changed in place keep the internal ORs and
+   * shared keys right */
   for (int i = 0; i < m.count; i += 7)
     if (m.proxy[i] >= 0) failed += !tb_tree_set_category_bits(&tree, m.proxy[i], 4u);
+  for (int i = 3; i < m.count; i += 5)
+    if (m.proxy[i] >= 0) failed += !tb_tree_set_apart_key(&tree, m.proxy[i], m.key[i] = m.key[i] > 0 ? 77 : -77);
   ck_assert_int_eq(failed, 0);
   check_against_brute_force(&tree, &m, 15);
 
@@ -687,6 +709,7 @@ START_TEST(small_trees_and_bad_input) {
     ck_assert_int_eq(tb_tree_get_user_id(&tree, id), TB_TREE_NULL);
     ck_assert(tb_tree_get_category_bits(&tree, id) == 0);
     ck_assert(!tb_tree_set_category_bits(&tree, id, 1u));
+    ck_assert(!tb_tree_set_apart_key(&tree, id, 3));
     ck_assert_float_eq(tb_tree_get_fat_aabb(&tree, id).upper.x, 0.0f);
   }
   ck_assert(tb_tree_validate(&tree));
@@ -696,6 +719,9 @@ START_TEST(small_trees_and_bad_input) {
   ck_assert_int_eq(tb_tree_query(&tree, everything, UINT64_MAX, NULL, NULL), TB_ERR_NULL_ARGUMENT);
   ck_assert_int_eq(tb_tree_query(NULL, everything, UINT64_MAX, count_query, &calls), TB_ERR_NULL_ARGUMENT);
   ck_assert_int_eq(tb_tree_query(&tree, box_at(nan, 0, 1, 1), UINT64_MAX, count_query, &calls),
+                   TB_ERR_INVALID_ARGUMENT);
+  ck_assert_int_eq(tb_tree_query_apart(&tree, everything, UINT64_MAX, 5, NULL, NULL), TB_ERR_NULL_ARGUMENT);
+  ck_assert_int_eq(tb_tree_query_apart(&tree, box_at(0, nan, 1, 1), UINT64_MAX, 5, count_query, &calls),
                    TB_ERR_INVALID_ARGUMENT);
   ck_assert_int_eq(tb_tree_ray_cast(&tree, &ray, UINT64_MAX, NULL, NULL), TB_ERR_NULL_ARGUMENT);
   ck_assert_int_eq(tb_tree_ray_cast(&tree, NULL, UINT64_MAX, count_ray, &calls), TB_ERR_NULL_ARGUMENT);
