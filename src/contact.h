@@ -36,6 +36,7 @@ typedef struct tb_contact {
    * contact_solver.c). */
   float impact_depth;
   uint32_t flags;
+  uint32_t walk_stamp; /* the narrow phase that last met it (tb_contacts_update), 0: none yet */
 } tb_contact;
 
 struct tb_world;

@@ -27,13 +27,14 @@ typedef struct tb_world {
   void* user_data;
   double time;
   int step_count;
-  tb_profile profile; /* of the last step */
-  tb_pool bodies;     /* of tb_body */
-  tb_pool shapes;     /* of tb_shape */
-  tb_pool contacts;   /* of tb_contact */
-  tb_pool chains;     /* of tb_chain */
-  tb_pool joints;     /* of tb_joint */
-  tb_pool islands;    /* of tb_island: sleeping islands */
+  uint32_t walk_stamp; /* tb_contacts_update's calls, 0 skipped on wrapping (tb_contact.walk_stamp) */
+  tb_profile profile;  /* of the last step */
+  tb_pool bodies;      /* of tb_body */
+  tb_pool shapes;      /* of tb_shape */
+  tb_pool contacts;    /* of tb_contact */
+  tb_pool chains;      /* of tb_chain */
+  tb_pool joints;      /* of tb_joint */
+  tb_pool islands;     /* of tb_island: sleeping islands */
   tb_broad_phase broad_phase;
   float hit_event_threshold;
   tb_custom_filter_fn* custom_filter;
