@@ -524,13 +524,13 @@ static bool update_contact(tb_world* w, int i) {
     tb_contact_destroy(w, i);
     return false;
   }
-  tb_manifold old = c->manifold;
   const tb_body *ba = tb_body_at(w, sa->body), *bb = tb_body_at(w, sb->body);
   if (boxes_apart(sa->aabb, sb->aabb)) { /* what the collision returns for no point */
     c->manifold = (tb_manifold){.point_count = 0};
     c->patch = (tb_patch){.slide_min = -FLT_MAX, .slide_max = FLT_MAX};
     c->cache.point_count = 0;
   } else if (!tb_manifold_cache_reuse(&c->cache, &c->manifold, ba, bb)) {
+    tb_manifold old = c->manifold;
     collide_table[sa->type][sb->type](sa, ba->transform, sb, bb->transform, &c->manifold, &c->patch);
     carry_impulses(&old, &c->manifold);
     tb_manifold_cache_store(&c->cache, &c->manifold, ba, bb);
