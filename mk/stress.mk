@@ -1,7 +1,7 @@
 # make stress: the stress suite of issue 7 (tests/stress/). Included by the Makefile.
-# `make stress` builds the suite at -O2 and at -O0 (DEBUG=1), compares the two
+# `make stress` builds the suite at -O3 and at -O0 (DEBUG=1), compares the two
 # builds' hashes of the stress scenes (the -O0 build runs each scene once, the
-# -O2 build twice, both runs compared), runs every test and writes
+# -O3 build twice, both runs compared), runs every test and writes
 # results/STRESS.md; it exits non-zero when a test fails. `make test` runs the
 # fast subset (stress_fast: the tests marked fast in tests/stress/stress_runner.c).
 STRESS_DIR := $(BUILD)/stress

@@ -1530,7 +1530,7 @@ void tb_contact_solver_push_out(tb_world* w, tb_step_context* ctx) {
    * move the push velocities u): once per substep, not once per sweep. */
   for (int i = 0; i < w->deep_count; ++i) {
     tb_deep_block* d = &deep[i];
-    tb_f4 base_separation[2], push_depth[2];
+    tb_f4 base_separation[2] = {zero, zero}, push_depth[2] = {zero, zero}; /* unused lanes stay 0 */
     load_deep(d, wide, base_separation, push_depth); /* the base separations move with the slides */
     d->impulse[0] = d->impulse[1] = zero;
     tb_f4 m[4];

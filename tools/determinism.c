@@ -1,5 +1,5 @@
 /* Prints the world hash of a busy scene after 1,000 steps. `make test` builds
- * this at -O0 and at -O2 and requires the same hash from both: tumble's
+ * this at -O0 and at -O3 and requires the same hash from both: tumble's
  * results must not depend on the optimiser (no FMA contraction, no
  * address-dependent order). */
 #include <inttypes.h>

@@ -546,7 +546,7 @@ static void classify_polygons(stats* s, int k, const dcore* a, const dcore* b, b
                               const tb_manifold* tm) {
   const double r = 2.0 * SKIN;
   s->configs++;
-  int fa, fb;
+  int fa = 0, fb = 0; /* (sat sets them) */
   double sa = sat(a, b, &fa), sb = sat(b, a, &fb), smax = dmax(sa, sb);
   int vertex_pair;
   double dist = core_distance(a, b, &vertex_pair);

@@ -1,9 +1,9 @@
 /* Determinism of the stress scenes: every stress test's scene is built by
  * the same function its test uses (so with the test's settings, sleep
  * included), stepped for a fixed number of steps and its world hash printed.
- * The -O2 build runs each scene twice in-process and the two hashes must be
+ * The -O3 build runs each scene twice in-process and the two hashes must be
  * equal; `make stress` runs the -O0 build once (`--hashes-once`, as -O0 is
- * about 5 times slower) and compares its lines with the -O2 build's. */
+ * about 5 times slower) and compares its lines with the -O3 build's. */
 #include <stdio.h>
 
 #include "stress.h"

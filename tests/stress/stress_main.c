@@ -3,7 +3,7 @@
  *   stress --hashes       prints each stress scene's hash, each scene run
  *                         twice (exits 1 when the two runs differ)
  *   stress --hashes-once  the same from one run (the -O0 build's side of the
- *                         -O0/-O2 check, as -O0 is slow)
+ *                         -O0/-O3 check, as -O0 is slow)
  * --only NAME runs one test ("determinism": the hash check alone); an unknown
  * NAME is an error that lists the tests. Exits non-zero when a test fails. */
 #include <stdio.h>

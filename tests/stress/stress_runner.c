@@ -90,11 +90,11 @@ static void determinism_row(const char* o0_path, stress_result* out) {
   for (const char* c = mine; *c; ++c) lines += *c == '\n';
   bool same_builds = strcmp(mine, other) == 0;
   out->pass = same_runs && (same_builds || o0_path == NULL) && lines > 0;
-  stress_note(out, "%d scenes: two runs %s; -O0 vs -O2 %s", lines, same_runs ? "equal" : "DIFFER",
+  stress_note(out, "%d scenes: two runs %s; -O0 vs -O3 %s", lines, same_runs ? "equal" : "DIFFER",
               o0_path == NULL ? "not compared (no --o0-hashes)"
               : same_builds   ? "equal"
                               : "DIFFER");
-  if (o0_path != NULL && !same_builds) fprintf(stderr, "-O2 hashes:\n%s-O0 hashes:\n%s", mine, other);
+  if (o0_path != NULL && !same_builds) fprintf(stderr, "-O3 hashes:\n%s-O0 hashes:\n%s", mine, other);
 }
 
 /* A table cell: '|' would end the cell, so it is escaped. */
@@ -173,7 +173,7 @@ int stress_run(const stress_options* options) {
                                              : "hash of every stress test's scene, built as its test builds it, "
                                                "after the test's run (the first 5 s of pyramid_100, the first "
                                                "minute of one_hour, the first 10 steps of pileup_1000 and 5,000 "
-                                               "steps of churn): equal over two runs and between the -O0 and -O2 "
+                                               "steps of churn): equal over two runs and between the -O0 and -O3 "
                                                "builds";
       cell(f, name);
       cell(f, criterion);
