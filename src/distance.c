@@ -725,6 +725,8 @@ void tb_time_of_impact_unchecked(const tb_toi_input* input, tb_toi_output* outpu
 /* ------------------------------------------------------------- ray casts -- */
 
 /* A ray in a shape's frame: origin o, translation d, hit fraction and normal. */
+/* The ray in a shape's frame. ray_begin fills it on every path that reads it;
+ * its callers still zero it first, since -O3 cannot see that. */
 typedef struct local_ray {
   tb_vec2 o, d;
   float max_fraction;
@@ -883,7 +885,7 @@ static void ray_finish(const tb_ray_input* ray, tb_transform xf, const local_hit
 }
 
 tb_result tb_ray_cast_circle(const tb_ray_input* ray, const tb_circle* circle, tb_transform xf, tb_cast_output* out) {
-  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f}; /* (filled by ray_begin; set for the compiler's sake) */
+  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f};
   tb_result res = ray_begin("tb_ray_cast_circle", ray, circle, xf, out, &r);
   if (res != TB_OK) return res;
   const char* why = tb_check_circle(circle);
@@ -895,7 +897,7 @@ tb_result tb_ray_cast_circle(const tb_ray_input* ray, const tb_circle* circle, t
 
 tb_result tb_ray_cast_capsule(const tb_ray_input* ray, const tb_capsule* capsule, tb_transform xf,
                               tb_cast_output* out) {
-  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f}; /* (filled by ray_begin; set for the compiler's sake) */
+  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f};
   tb_result res = ray_begin("tb_ray_cast_capsule", ray, capsule, xf, out, &r);
   if (res != TB_OK) return res;
   const char* why = tb_check_capsule(capsule);
@@ -910,7 +912,7 @@ tb_result tb_ray_cast_capsule(const tb_ray_input* ray, const tb_capsule* capsule
 
 tb_result tb_ray_cast_segment(const tb_ray_input* ray, const tb_segment* segment, tb_transform xf,
                               tb_cast_output* out) {
-  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f}; /* (filled by ray_begin; set for the compiler's sake) */
+  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f};
   tb_result res = ray_begin("tb_ray_cast_segment", ray, segment, xf, out, &r);
   if (res != TB_OK) return res;
   const char* why = tb_check_segment(segment);
@@ -922,7 +924,7 @@ tb_result tb_ray_cast_segment(const tb_ray_input* ray, const tb_segment* segment
 
 tb_result tb_ray_cast_polygon(const tb_ray_input* ray, const tb_polygon* polygon, tb_transform xf,
                               tb_cast_output* out) {
-  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f}; /* (filled by ray_begin; set for the compiler's sake) */
+  local_ray r = {{0.0f, 0.0f}, {0.0f, 0.0f}, 0.0f};
   tb_result res = ray_begin("tb_ray_cast_polygon", ray, polygon, xf, out, &r);
   if (res != TB_OK) return res;
   const char* why = tb_check_polygon(polygon);
