@@ -5,9 +5,12 @@
  * (sleeping off in large_pyramid, many_pyramids and joint_grid, as v3's
  * builders turn it off there).
  *
- *   bench_v3_tumble SCENE [STEPS]
+ *   bench_v3_tumble SCENE [STEPS] [--relax-iterations N] [--contact-hertz F]
  * SCENE pyramid_base_N (N in 1..100) is large_pyramid with a base of N boxes
- * (the small-pyramid scaling rows; sleeping off, 500 steps by default).
+ * (the small-pyramid scaling rows; sleeping off, 500 steps by default). The
+ * options run the scene at another solver setting than tumble's default (8
+ * relax passes, 120 Hz contacts), to put tumble at v3's own policy (one relax
+ * pass a substep, 30 Hz contacts) beside v3 (docs/bench/V3.md).
  * prints: tumble SCENE STEPS MS_PER_STEP bodies B shapes S joints J pairs P
  * touching T awake A bytes N body_bytes BB contact_bytes CB relax R hash H (the
  * world's bytes, its body and contact parts per body and per contact, the
@@ -16,6 +19,7 @@
  * results) */
 #define _POSIX_C_SOURCE 200809L
 #include <inttypes.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,10 +38,25 @@ static double cpu_seconds(void) {
   return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+static int usage(const char* program) {
+  fprintf(stderr, "usage: %s SCENE [STEPS] [--relax-iterations N] [--contact-hertz F]\n", program);
+  return 2;
+}
+
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    fprintf(stderr, "usage: %s SCENE [STEPS]\n", argv[0]);
-    return 2;
+  if (argc < 2) return usage(argv[0]);
+  int steps_arg = 0, relax_iterations = 0;
+  float contact_hertz = 0.0f;
+  bool set_relax = false, set_hertz = false; /* else the defaults */
+  for (int i = 2; i < argc; ++i) {
+    if (strcmp(argv[i], "--relax-iterations") == 0 && i + 1 < argc)
+      relax_iterations = atoi(argv[++i]), set_relax = true;
+    else if (strcmp(argv[i], "--contact-hertz") == 0 && i + 1 < argc)
+      contact_hertz = (float)atof(argv[++i]), set_hertz = true;
+    else if (argv[i][0] != '-' && steps_arg == 0)
+      steps_arg = atoi(argv[i]);
+    else
+      return usage(argv[0]);
   }
   /* pyramid_base_N: the catalogue builds large_pyramid at a scale, base 100 x scale */
   int base = 0;
@@ -54,9 +73,16 @@ int main(int argc, char** argv) {
     fprintf(stderr, "%s: no scene named %s\n", argv[0], argv[1]);
     return 2;
   }
-  int steps = argc > 2 ? atoi(argv[2]) : sc->default_steps;
+  int steps = steps_arg > 0 ? steps_arg : sc->default_steps;
   if (steps < 2) steps = 2;
   tb_world_id world = tb_scene_create_world(sc);
+  tb_world_def def = tb_default_world_def();
+  if ((set_relax && tb_world_set_relax_iterations(world, relax_iterations) != TB_OK) ||
+      (set_hertz && tb_world_set_contact_tuning(world, contact_hertz, def.contact_damping_ratio,
+                                                def.contact_push_max_velocity) != TB_OK)) {
+    fprintf(stderr, "%s: %s\n", argv[0], tb_last_error());
+    return 2;
+  }
   sc->build(world, base > 0 ? (float)base / 100.0f : 1.0f);
   if (!v3_sleeps(sc->name)) tb_world_enable_sleeping(world, false);
   if (sc->update != NULL) sc->update(world, 0);
