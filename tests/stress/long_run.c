@@ -38,6 +38,7 @@ tb_world_id stress_new_drum(void) {
     tb_body_def bd = tb_default_body_def();
     bd.type = TB_DYNAMIC_BODY;
     bd.position = p;
+    stress_perturb(&bd.position);
     tb_body_id b = tb_create_body(w, &bd);
     if (i % 3 == 0) {
       tb_polygon box;

@@ -37,6 +37,16 @@ void stress_note(stress_result* out, const char* fmt, ...) __attribute__((format
 
 /* ---- worlds and bodies -------------------------------------------------- */
 
+/* --perturb SEED: the dynamic bodies the helpers below make (and the drum's
+ * load of one_hour) start moved by up to STRESS_PERTURB_METERS in x and y,
+ * drawn from SEED anew in each world (0, the default: not moved). A test
+ * whose figure is one draw of a chaotic pile shows its spread over seeds:
+ * a change that only moves rounding moves it as much as a micrometre does. */
+#define STRESS_PERTURB_METERS 1e-6f
+extern uint32_t stress_perturb_seed;
+/* Moves p by this world's next draw (nothing when the seed is 0). */
+void stress_perturb(tb_vec2* p);
+
 /* A world from tb_default_world_def(); sleep switched as asked. */
 tb_world_id stress_world(bool enable_sleep);
 /* One step at 60 Hz, 4 substeps; false (and a message on stderr) on error. */

@@ -17,7 +17,26 @@ void stress_note(stress_result* out, const char* fmt, ...) {
   va_end(ap);
 }
 
+uint32_t stress_perturb_seed = 0;
+static uint32_t perturb_state = 0; /* xorshift32, reset by stress_world */
+
+static float perturb_draw(void) {
+  uint32_t x = perturb_state;
+  x ^= x << 13;
+  x ^= x >> 17;
+  x ^= x << 5;
+  perturb_state = x;
+  return STRESS_PERTURB_METERS * (2.0f * ((float)(x >> 8) / 16777215.0f) - 1.0f);
+}
+
+void stress_perturb(tb_vec2* p) {
+  if (stress_perturb_seed == 0) return;
+  p->x += perturb_draw();
+  p->y += perturb_draw();
+}
+
 tb_world_id stress_world(bool enable_sleep) {
+  perturb_state = stress_perturb_seed * 2654435761u + 1u;
   tb_world_def wd = tb_default_world_def();
   wd.enable_sleep = enable_sleep;
   return tb_create_world(&wd);
@@ -48,6 +67,7 @@ static tb_body_id dynamic_body(tb_world_id w, tb_vec2 p, float angle) {
   bd.type = TB_DYNAMIC_BODY;
   bd.position = p;
   bd.angle = angle;
+  stress_perturb(&bd.position);
   return tb_create_body(w, &bd);
 }
 
