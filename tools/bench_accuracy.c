@@ -95,15 +95,18 @@ static bench_world_def world_def(double gravity_y) {
   return d;
 }
 
-/* An offset in [-PERTURB_METERS, PERTURB_METERS] (--perturb). */
-static double perturbation(void) {
-  uint32_t x = g_perturb_state;
+/* xorshift32, uniform in [0, 1) */
+static double xorshift(uint32_t* state) {
+  uint32_t x = *state;
   x ^= x << 13;
   x ^= x >> 17;
   x ^= x << 5;
-  g_perturb_state = x;
-  return PERTURB_METERS * (2.0 * (double)x / 4294967295.0 - 1.0);
+  *state = x;
+  return (double)x / 4294967296.0;
 }
+
+/* An offset in [-PERTURB_METERS, PERTURB_METERS) (--perturb). */
+static double perturbation(void) { return PERTURB_METERS * (2.0 * xorshift(&g_perturb_state) - 1.0); }
 
 static void sim_open(sim* s, const bench_world_def* def) {
   g_perturb_state = g_perturb_seed * 2654435761u + 1u; /* each world of a run draws the same offsets */
@@ -609,15 +612,6 @@ static void run_chain_ball(sim* s, double m[METRICS]) {
   m[1] = sum_max;
   m[2] = sum;
   sim_close(s);
-}
-
-static double xorshift(uint32_t* state) {
-  uint32_t x = *state;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  *state = x;
-  return (double)x / 4294967296.0;
 }
 
 /* elastic_balls: no gravity; a free square box (inner 10 m, walls 0.5 m

@@ -17,15 +17,6 @@
 #define BULLET_COUNT 1000
 #define BULLET_SEED 20240607u
 
-static float uniform(unsigned* state, float lo, float hi) {
-  unsigned x = *state;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  *state = x;
-  return lo + (hi - lo) * (float)((double)x / 4294967296.0);
-}
-
 tb_world_id stress_new_bullets(void) {
   tb_world_id w = stress_world(true);
   unsigned seed = BULLET_SEED;
@@ -51,8 +42,8 @@ tb_world_id stress_new_bullets(void) {
     tb_body_def bd = tb_default_body_def();
     bd.type = TB_DYNAMIC_BODY;
     bd.is_bullet = true;
-    bd.position = (tb_vec2){uniform(&seed, -9.0f, 9.0f), uniform(&seed, -9.0f, 9.0f)};
-    float a = uniform(&seed, -3.14159265f, 3.14159265f);
+    bd.position = (tb_vec2){stress_uniform(&seed, -9.0f, 9.0f), stress_uniform(&seed, -9.0f, 9.0f)};
+    float a = stress_uniform(&seed, -3.14159265f, 3.14159265f);
     bd.linear_velocity = (tb_vec2){BULLET_SPEED * cosf(a), BULLET_SPEED * sinf(a)};
     tb_body_id b = tb_create_body(w, &bd);
     tb_create_circle_shape(b, &bsd, &c);

@@ -46,6 +46,9 @@ void stress_note(stress_result* out, const char* fmt, ...) __attribute__((format
 extern uint32_t stress_perturb_seed;
 /* Moves p by this world's next draw (nothing when the seed is 0). */
 void stress_perturb(tb_vec2* p);
+/* Deterministic random numbers (xorshift32), uniform in [lo, hi]: float
+ * rounding can return hi itself. */
+float stress_uniform(unsigned* state, float lo, float hi);
 
 /* A world from tb_default_world_def(); sleep switched as asked. */
 tb_world_id stress_world(bool enable_sleep);

@@ -18,21 +18,21 @@ void stress_note(stress_result* out, const char* fmt, ...) {
 }
 
 uint32_t stress_perturb_seed = 0;
-static uint32_t perturb_state = 0; /* xorshift32, reset by stress_world */
+static unsigned perturb_state = 0; /* stress_uniform's, reset by stress_world */
 
-static float perturb_draw(void) {
-  uint32_t x = perturb_state;
+float stress_uniform(unsigned* state, float lo, float hi) {
+  unsigned x = *state;
   x ^= x << 13;
   x ^= x >> 17;
   x ^= x << 5;
-  perturb_state = x;
-  return STRESS_PERTURB_METERS * (2.0f * ((float)(x >> 8) / 16777215.0f) - 1.0f);
+  *state = x;
+  return lo + (hi - lo) * (float)((double)x / 4294967296.0);
 }
 
 void stress_perturb(tb_vec2* p) {
   if (stress_perturb_seed == 0) return;
-  p->x += perturb_draw();
-  p->y += perturb_draw();
+  p->x += stress_uniform(&perturb_state, -STRESS_PERTURB_METERS, STRESS_PERTURB_METERS);
+  p->y += stress_uniform(&perturb_state, -STRESS_PERTURB_METERS, STRESS_PERTURB_METERS);
 }
 
 tb_world_id stress_world(bool enable_sleep) {
