@@ -937,7 +937,6 @@ static const char* k_csv_header =
     "scene,engine,hz,substeps,velocity_iterations,position_iterations,integrator,is_default,steps,runs,"
     "ms_step_min,ms_step_median,ms_per_60hz_frame,error,metric2,metric3,bodies,contacts,joints,ok\n";
 
-/* Runs one scene at one setting; writes a CSV row; returns false when broken. */
 /* --perturb: the setting's errors over g_perturb_runs draws of start offsets,
  * their median and largest. */
 static bool run_perturbed(const scene* sc, const engine_setting* es, const char* label) {
@@ -965,6 +964,7 @@ static bool run_perturbed(const scene* sc, const engine_setting* es, const char*
   return ok;
 }
 
+/* Runs one scene at one setting; writes a CSV row; returns false when broken. */
 static bool run_setting(const scene* sc, const engine_setting* es, int runs, FILE* csv) {
   double ms[MAX_RUNS], m[METRICS] = {0.0, 0.0, 0.0};
   int done = 0, steps = 0, bodies = 0, contacts = 0, joints = 0;
