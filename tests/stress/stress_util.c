@@ -207,8 +207,9 @@ double stress_deepest_overlap(const tb_body_id* bodies, int count) {
  * are several times that (a 0.5 m box's end point: 12 against 4 per kg^-1),
  * and leaving them out (as this check did before) called springs at rest an
  * overlap left unresolved: the 1,000-body pile-up then "failed" in 8 of 12
- * starts moved by a micrometre (`stress --perturb`), by 3.8 to 13.8 mm, and
- * the same contacts are 0.5 to 1.8 mm beyond their force with K whole. In a
+ * starts moved by a micrometre (`stress --perturb`, first generator), by 3.8
+ * to 13.8 mm; with K whole seeds 1..12 give 0.6 to 4.3 mm but for two (6.2
+ * and 7.9 mm, unexplained; docs/bench/V3.md). In a
  * pile squeezed into its container the force chains press row-mates
  * together like a flat arch, with many times a circle's weight: their
  * resting overlaps are millimetres deep and hold, as the springs' rest
