@@ -897,7 +897,8 @@ typedef struct tb_manifold_point {
   /* Impulses the solver applied at this point in the last substep of the
    * last step (N s; 0 from the tb_collide_* functions), along the normal and
    * along the tangent (n.y, -n.x). Divide by the substep, time_step /
-   * substeps, for the contact force. */
+   * substeps, for the contact force. A bounce (restitution), applied after
+   * the substeps, is not in them: the next step starts from these. */
   float normal_impulse;
   float tangent_impulse;
 } tb_manifold_point;
