@@ -13,8 +13,8 @@ plot 'projectile_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#
      'projectile_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'projectile_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.00024 4.79681e-06
-0.000689 0.083334
+0.000224 4.79681e-06
+0.000629 0.083334
 e
 set output 'constant_spin.png'
 set title 'constant_spin: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -24,8 +24,8 @@ plot 'constant_spin_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb
      'constant_spin_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'constant_spin_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.000253 1.63913e-07
-0.000683 4.45545e-06
+0.000237 1.63913e-07
+0.000619 4.45545e-06
 e
 set output 'pendulum_5.png'
 set title 'pendulum_5: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -35,8 +35,8 @@ plot 'pendulum_5_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#
      'pendulum_5_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'pendulum_5_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.000641 6.60302e-06
-0.000768 0.000115291
+0.000661 6.60302e-06
+0.000775 0.000115291
 e
 set output 'pendulum_90.png'
 set title 'pendulum_90: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -46,8 +46,8 @@ plot 'pendulum_90_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '
      'pendulum_90_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'pendulum_90_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.000657 8.47884e-05
-0.000793 0.071545
+0.000674 8.47884e-05
+0.000798 0.071545
 e
 set output 'rolling_disc.png'
 set title 'rolling_disc: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -57,8 +57,8 @@ plot 'rolling_disc_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb 
      'rolling_disc_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'rolling_disc_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.001533 0.00276654
-0.001317 0.0097934
+0.001527 0.00276654
+0.001311 0.0097934
 e
 set output 'sliding_box.png'
 set title 'sliding_box: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -68,8 +68,8 @@ plot 'sliding_box_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '
      'sliding_box_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'sliding_box_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.001573 0.00278314
-0.001614 0.0114681
+0.001579 0.00278314
+0.001617 0.0114681
 e
 set output 'sticking_box.png'
 set title 'sticking_box: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -79,8 +79,8 @@ plot 'sticking_box_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb 
      'sticking_box_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'sticking_box_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.001171 1.42628e-05
-0.001552 0.000991256
+0.001164 1.42628e-05
+0.001559 0.000991256
 e
 set output 'bounce_050.png'
 set title 'bounce_050: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -90,8 +90,8 @@ plot 'bounce_050_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#
      'bounce_050_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'bounce_050_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.000301 0.00103384
-0.000798 0.00848962
+0.000291 0.00103378
+0.000796 0.00848962
 e
 set output 'bounce_100.png'
 set title 'bounce_100: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -101,8 +101,8 @@ plot 'bounce_100_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#
      'bounce_100_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'bounce_100_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.00029 0.00520205
-0.000714 0.00904442
+0.000278 0.00520158
+0.000712 0.00904442
 e
 set output 'collision_1d.png'
 set title 'collision_1d: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -112,8 +112,8 @@ plot 'collision_1d_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb 
      'collision_1d_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'collision_1d_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.000409 9.48637e-09
-0.000961 1.03818e-08
+0.000387 9.48637e-09
+0.000959 1.03818e-08
 e
 set output 'bullet_block.png'
 set title 'bullet_block: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -123,8 +123,8 @@ plot 'bullet_block_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb 
      'bullet_block_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'bullet_block_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.001564 7.24536e-09
-0.001325 7.24536e-09
+0.001532 7.24536e-09
+0.001323 7.24536e-09
 e
 set output 'stack_15.png'
 set title 'stack_15: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -134,8 +134,8 @@ plot 'stack_15_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#1f
      'stack_15_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'stack_15_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.006741 0.00434017
-0.010752 0.0418461
+0.006583 0.00434017
+0.01078 0.0418461
 e
 set output 'stack_30.png'
 set title 'stack_30: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -145,8 +145,8 @@ plot 'stack_30_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#1f
      'stack_30_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'stack_30_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.01428 0.0173569
-0.02132 0.211076
+0.014002 0.0173569
+0.021442 0.211076
 e
 set output 'pyramid_20.png'
 set title 'pyramid_20: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -156,8 +156,8 @@ plot 'pyramid_20_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#
      'pyramid_20_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'pyramid_20_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.211546 0.00350874
-0.338024 0.064699
+0.213332 0.00350874
+0.339987 0.064699
 e
 set output 'pyramid_100.png'
 set title 'pyramid_100: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -167,8 +167,8 @@ plot 'pyramid_100_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '
      'pyramid_100_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'pyramid_100_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-8.95576 0.0621934
-12.8329 4.91797
+9.36409 0.0621934
+12.839 4.91797
 e
 set output 'mass_ratio.png'
 set title 'mass_ratio: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -178,8 +178,8 @@ plot 'mass_ratio_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#
      'mass_ratio_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'mass_ratio_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.005961 0.00775814
-0.006566 0.043375
+0.00593 0.00775814
+0.006526 0.043375
 e
 set output 'chain_ball.png'
 set title 'chain_ball: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -189,8 +189,8 @@ plot 'chain_ball_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '#
      'chain_ball_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'chain_ball_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.034843 0.0156535
-0.016631 1.68448
+0.033559 0.0156535
+0.019336 1.68448
 e
 set output 'elastic_balls.png'
 set title 'elastic_balls: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -200,8 +200,8 @@ plot 'elastic_balls_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb
      'elastic_balls_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'elastic_balls_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.014849 0.000398073
-0.015634 6.54378e-07
+0.013984 0.000396722
+0.015415 6.54378e-07
 e
 set output 'mass_spring.png'
 set title 'mass_spring: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -211,8 +211,8 @@ plot 'mass_spring_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '
      'mass_spring_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'mass_spring_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.000314 0.000114322
-0.000597 0.00191957
+0.000302 0.000114322
+0.000595 0.00191957
 e
 set output 'far_pyramid.png'
 set title 'far_pyramid: error against cost (filled: Pareto front, ringed: default)' noenhanced
@@ -222,8 +222,8 @@ plot 'far_pyramid_tumble.dat' index 0 using 1:2 with points pt 6 ps 1.2 lc rgb '
      'far_pyramid_box2d.dat' index 0 using 1:2 with points pt 4 ps 1.2 lc rgb '#d62728' title 'Box2D 2.4.1 sweep', \
      'far_pyramid_box2d.dat' index 1 using 1:2 with linespoints pt 5 ps 1.2 lw 2 lc rgb '#d62728' title 'Box2D Pareto front', \
      '-' using 1:2 with points pt 6 ps 3.5 lw 2 lc rgb 'black' title 'defaults (60 Hz, 4 substeps / 8-3)'
-0.045572 0.0418703
-0.092031 0.95697
+0.045629 0.0418703
+0.102213 0.95697
 e
 set output 'scaling.png'
 set title 'pyramids of base 10 to 140: step time against body count'
