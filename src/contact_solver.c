@@ -1835,9 +1835,9 @@ void tb_contact_solver_finish(tb_world* w, tb_step_context* ctx) {
    * instant that the next step does not repeat, and warm started it pushed
    * the separating bodies apart again at the next step's start, which in a
    * row (a ball between two others) the neighbour's contact answered before
-   * this one took the push back: elastic_balls gained up to 14% of its
-   * energy in one step (the largest of 41 perturbed starts; 6.2% without).
-   * The blocks are read in their order, and the contacts, all over the pool,
+   * this one took the push back (elastic_balls' largest energy error over 41
+   * perturbed starts 0.138, 0.062 without it; the rest was restitution's
+   * mean arms, restitution_targets). The blocks are read in their order, and the contacts, all over the pool,
    * are only written: both points (a lane's second point, when its manifold
    * has one only, holds the zeros that the collision left there), so that no
    * read waits on a contact's record (in step order each lane's read waited
